@@ -1,0 +1,52 @@
+#pragma once
+// Minimal command-line parsing for the hrspace subcommands: positional
+// arguments, `--name value` options and `--flag` switches, each declared up
+// front so that a typo is an error (exit 2), never silently ignored.
+
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace hrs::cli {
+
+class Args {
+ public:
+  //! `options` take a value, `flags` do not; anything else starting with
+  //! "--" is an InputError. `--help`/`-h` is always accepted.
+  Args(const std::vector<std::string>& argv, std::set<std::string> options,
+       std::set<std::string> flags = {});
+
+  bool help() const { return help_; }
+  const std::vector<std::string>& positional() const { return positional_; }
+  bool flag(const std::string& name) const { return flags_set_.count(name) > 0; }
+  std::optional<std::string> get(const std::string& name) const;
+  std::string get_or(const std::string& name, const std::string& fallback) const;
+  //! Parses an option as a number; InputError naming the option when malformed.
+  double number(const std::string& name, double fallback) const;
+  long integer(const std::string& name, long fallback, long min, long max) const;
+  //! Requires exactly `n` positional arguments; `usage` is printed otherwise.
+  void expect_positional(std::size_t n, const std::string& usage) const;
+
+ private:
+  bool help_ = false;
+  std::vector<std::string> positional_;
+  std::map<std::string, std::string> values_;
+  std::set<std::string> flags_set_;
+};
+
+//! Parses "x,y,theta" into three numbers; InputError naming `what` otherwise.
+std::vector<double> parse_numbers(const std::string& text, std::size_t count,
+                                  const std::string& what);
+
+//! Reads a whole file, or stdin when path is "-"; InputError when unreadable.
+std::string read_input(const std::string& path);
+
+//! Splits CSV text into rows of numbers with `columns` fields; skips one
+//! header row if its first field is not a number. InputError names line and
+//! field when a value is malformed.
+std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::size_t columns,
+                                                  const std::string& label);
+
+}  // namespace hrs::cli

@@ -1,0 +1,16 @@
+#pragma once
+// The hrspace subcommands. Each takes the arguments after its name, writes to
+// stdout/stderr and returns the exit status; InputError escapes to main(),
+// which prints it as one line and exits 2.
+
+#include <string>
+#include <vector>
+
+namespace hrs::cli {
+
+using Argv = std::vector<std::string>;
+
+int cmd_validate(const Argv& args);  //!< experiments/cmd_geometry.cpp
+int cmd_collide(const Argv& args);   //!< experiments/cmd_geometry.cpp
+
+}  // namespace hrs::cli

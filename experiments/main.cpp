@@ -1,0 +1,67 @@
+// hrspace: the command-line entry point. Dispatches to the subcommands of
+// DESIGN.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "experiments/commands.h"
+#include "geometry/error.h"
+
+namespace {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const hrs::cli::Argv&);
+};
+
+constexpr Command kCommands[] = {
+    {"validate", "check a scene file and print its summary", hrs::cli::cmd_validate},
+    {"collide", "collision and clearance of poses (CSV in, CSV out)", hrs::cli::cmd_collide},
+};
+
+void usage(std::ostream& out) {
+  out << "usage: hrspace <command> [args]   (hrspace <command> --help for details)\n\n"
+         "hrspace designs rooms shared by people and a self-driving wheelchair.\n\ncommands:\n";
+  for (const auto& c : kCommands) {
+    std::string n = c.name;
+    n.resize(10, ' ');
+    out << "  " << n << c.summary << "\n";
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::ios::sync_with_stdio(false);
+  if (argc < 2) {
+    usage(std::cerr);
+    return 2;
+  }
+  const std::string name = argv[1];
+  if (name == "--help" || name == "-h" || name == "help") {
+    usage(std::cout);
+    return 0;
+  }
+  const hrs::cli::Argv args(argv + 2, argv + argc);
+  for (const auto& c : kCommands) {
+    if (name != c.name) continue;
+    try {
+      return c.run(args);
+    } catch (const hrs::InputError& e) {
+      std::cout.flush();
+      std::cerr << "hrspace " << name << ": " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cout.flush();
+      std::cerr << "hrspace " << name << ": internal error: " << e.what() << "\n";
+      return 1;
+    }
+  }
+  std::cerr << "hrspace: unknown command '" << name << "'\n";
+  usage(std::cerr);
+  return 2;
+}

@@ -1,0 +1,53 @@
+#pragma once
+// Plain 2-D value types shared by every module: points, poses, angle wrapping.
+// Angles are radians, counter-clockwise from world +x (scene-format.md).
+
+#include <cmath>
+#include <numbers>
+
+namespace hrs::geometry {
+
+//! A point or vector in the plane, metres.
+struct Vec2 {
+  double x = 0.0;  //!< metres
+  double y = 0.0;  //!< metres
+  friend Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+  friend Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+  friend Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
+  friend bool operator==(const Vec2&, const Vec2&) = default;
+};
+
+inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
+inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+
+//! Wraps an angle to (-pi, pi].
+inline double wrap_angle(double a) {
+  constexpr double kPi = std::numbers::pi;
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  if (a > -kPi && a <= kPi) return a;
+  a = std::fmod(a, kTwoPi);
+  if (a <= -kPi) a += kTwoPi;
+  if (a > kPi) a -= kTwoPi;
+  return a;
+}
+
+//! A rigid pose: position and heading (the direction the front faces).
+struct Pose2 {
+  double x = 0.0;      //!< metres
+  double y = 0.0;      //!< metres
+  double theta = 0.0;  //!< radians
+  Vec2 position() const { return {x, y}; }
+  friend bool operator==(const Pose2&, const Pose2&) = default;
+};
+
+//! Rotates v by angle a (counter-clockwise).
+inline Vec2 rotate(Vec2 v, double a) {
+  const double c = std::cos(a), s = std::sin(a);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+//! Maps a point from the frame of `p` to the world.
+inline Vec2 to_world(const Pose2& p, Vec2 local) { return p.position() + rotate(local, p.theta); }
+
+}  // namespace hrs::geometry

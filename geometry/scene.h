@@ -1,0 +1,130 @@
+#pragma once
+// The scene model (`hrspace-scene/1`, see ../shared/scene-format.md): plain
+// data for the room, door, wheelchair, furniture, interior-design preferences
+// and the AO graph (paper §III-A), with its JSON reader and writer. Validation
+// of every rule of the format happens in the reader; errors are InputError
+// with "FILE: /json/pointer: what is wrong".
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/pose.h"
+
+namespace hrs::geometry {
+
+using Polygon = std::vector<Vec2>;  //!< vertices, counter-clockwise, not closed
+
+//! The room: the inner face of the walls, any simple polygon.
+struct Room {
+  Polygon polygon;                           //!< counter-clockwise
+  std::optional<std::array<double, 2>> size;  //!< set when the file used the `size` shorthand
+  friend bool operator==(const Room&, const Room&) = default;
+};
+
+struct Door {
+  Vec2 center;                     //!< middle of the opening, on the room boundary
+  double width = 0.0;              //!< along the wall
+  double clear_depth = 1.2;        //!< depth of the zone kept free of furniture
+  std::optional<Pose2> start;      //!< explicit start pose of the wheelchair
+  friend bool operator==(const Door&, const Door&) = default;
+};
+
+struct Wheelchair {
+  double length = 0.0;          //!< along the heading
+  double width = 0.0;           //!< across the heading
+  double turning_radius = 0.0;  //!< Reeds-Shepp minimum turning radius
+  friend bool operator==(const Wheelchair&, const Wheelchair&) = default;
+};
+
+//! Preference for the nearest wall (interior-design cost, §III-D).
+struct WallPreference {
+  std::optional<double> distance;  //!< footprint-to-wall distance
+  std::optional<double> angle;     //!< heading minus the wall's inward normal
+  friend bool operator==(const WallPreference&, const WallPreference&) = default;
+};
+
+enum class Side { kFront = 0, kBack = 1, kLeft = 2, kRight = 3 };
+
+//! Where the wheelchair may stop to use an object.
+struct Approach {
+  std::array<bool, 4> sides{true, true, true, true};  //!< indexed by Side
+  double gap = 0.1;                                    //!< chair-to-object distance
+  friend bool operator==(const Approach&, const Approach&) = default;
+};
+
+struct Object {
+  std::string id;
+  std::optional<std::array<double, 2>> size;  //!< [depth, width] when given as size
+  Polygon footprint;  //!< local frame, counter-clockwise (from size or polygon)
+  Pose2 pose;
+  bool fixed = false;
+  std::optional<WallPreference> wall;
+  std::optional<Approach> approach;  //!< absent: defaults (all sides, gap 0.1)
+  //! The approach rule in force (defaults when absent).
+  Approach approach_or_default() const { return approach.value_or(Approach{}); }
+  friend bool operator==(const Object&, const Object&) = default;
+};
+
+struct Relation {
+  std::string a, b;
+  std::optional<double> distance;  //!< target centre distance
+  std::optional<double> angle;     //!< target of wrap(theta_a - theta_b)
+  double weight = 1.0;
+  friend bool operator==(const Relation&, const Relation&) = default;
+};
+
+//! The AO graph: from -> {to: probability}; "door" is the start node.
+struct Activity {
+  std::map<std::string, std::map<std::string, double>> transitions;
+  int sequences = 10;  //!< M
+  int visits = 3;      //!< objects per tour after the door
+  friend bool operator==(const Activity&, const Activity&) = default;
+};
+
+struct Weights {
+  std::array<double, 3> path{1.0, 1.0, 1.0};   //!< length, rotation, clearance
+  std::array<double, 2> interior{1.0, 1.0};    //!< pairwise distance, pairwise rotation
+  friend bool operator==(const Weights&, const Weights&) = default;
+};
+
+struct Scene {
+  std::string name;
+  Room room;
+  Door door;
+  Wheelchair wheelchair;
+  std::vector<Object> objects;
+  std::vector<Relation> relations;
+  Activity activity;
+  Weights weights;
+  friend bool operator==(const Scene&, const Scene&) = default;
+
+  //! Index of the object with this id, or -1.
+  int find_object(std::string_view id) const;
+};
+
+//! Reads and validates a scene file. Throws InputError("FILE: /pointer: what").
+Scene load_scene(const std::string& path);
+//! Parses and validates scene text; `label` names the source in messages.
+Scene parse_scene(std::string_view text, const std::string& label);
+//! Writes a scene as `hrspace-scene/1` JSON text (pretty-printed).
+std::string write_scene(const Scene& scene);
+
+//! The object's footprint in world coordinates (rotation in doubles).
+Polygon world_footprint(const Object& object);
+//! The footprint rotated by the object's heading, not yet translated: the
+//! canonical geometry; world vertices are exactly these plus the position.
+Polygon rotated_footprint(const Object& object);
+//! Inward unit normal of the wall holding the door.
+Vec2 door_inward_normal(const Scene& scene);
+//! The rectangle inside the door that furniture must keep free.
+Polygon door_clear_zone(const Scene& scene);
+//! The wheelchair's start pose (explicit or the default just inside the door).
+Pose2 door_start_pose(const Scene& scene);
+//! Area of a simple polygon (positive when counter-clockwise).
+double signed_area(const Polygon& polygon);
+
+}  // namespace hrs::geometry
