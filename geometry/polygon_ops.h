@@ -1,0 +1,28 @@
+#pragma once
+// Exact polygon predicates and decompositions (CGAL with exact predicates,
+// confined to polygon_ops.cpp). Input coordinates are doubles, taken exactly.
+
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+
+namespace hrs::geometry {
+
+//! True if the polygon has >= 3 vertices and no two non-adjacent edges meet.
+bool is_simple(const Polygon& polygon);
+//! True if counter-clockwise (positive orientation); polygon must be simple.
+bool is_counterclockwise(const Polygon& polygon);
+//! True if `inner` lies in the closed region of `outer` (both simple).
+bool polygon_inside(const Polygon& inner, const Polygon& outer);
+//! True if the open interiors of two simple polygons intersect.
+bool interiors_overlap(const Polygon& a, const Polygon& b);
+//! Exact signed distance test: distance from p to the polygon's boundary.
+double boundary_distance(Vec2 p, const Polygon& polygon);
+//! Convex pieces whose union is the simple counter-clockwise polygon
+//! (Hertel–Mehlhorn on an exact triangulation); a convex input is returned as is.
+std::vector<Polygon> convex_partition(const Polygon& polygon);
+//! Convex pieces covering (room bounding box grown by `margin`) minus the room.
+std::vector<Polygon> complement_pieces(const Polygon& room, double margin);
+
+}  // namespace hrs::geometry
