@@ -1,0 +1,43 @@
+#pragma once
+// Path metrics that the path cost of §III-D is built from (DESIGN.md
+// "Costs"): length, rotation (sum of wrapped heading changes between
+// consecutive waypoints) and clearance (corridor width left + right of each
+// waypoint, through CSpace::clearance). Turning these into a cost is the
+// optimizer's business; this file only measures.
+
+#include <vector>
+
+#include "geometry/cspace.h"
+#include "geometry/pose.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::planning {
+
+//! Waypoint spacing used for tours and the `plan` output (5 cm).
+inline constexpr double kWaypointStep = 0.05;
+//! ADA clear width (metres), the reference corridor width of DESIGN.md.
+inline constexpr double kReferenceWidth = 0.915;
+
+struct PathMetrics {
+  double length = 0.0;         //!< metres, sum of segment lengths
+  double rotation = 0.0;       //!< radians, Σ |wrap(θ_{i+1} − θ_i)| over waypoints
+  double clearance = 0.0;      //!< metres, mean corridor width (left + right) over waypoints
+  double min_clearance = 0.0;  //!< metres, narrowest corridor width over waypoints
+  //! metres, mean of max(0, kReferenceWidth − width) over waypoints
+  double clearance_deficit = 0.0;
+  int waypoints = 0;  //!< number of waypoints the means are over
+};
+
+//! Waypoints of `path` from `start`, at most kWaypointStep apart, ends included.
+std::vector<geometry::Pose2> waypoints_of(const geometry::Pose2& start, const rs::Path& path,
+                                          double step = kWaypointStep);
+//! Sum of |wrap(θ_{i+1} − θ_i)| over consecutive waypoints.
+double rotation_of(const std::vector<geometry::Pose2>& waypoints);
+//! All metrics of a path given by its waypoints and its length.
+PathMetrics measure(const geometry::CSpace& cspace, const std::vector<geometry::Pose2>& waypoints,
+                    double length);
+//! Combines per-leg metrics into one (lengths and rotations add, clearance
+//! means are weighted by waypoint counts).
+PathMetrics combine(const std::vector<PathMetrics>& parts);
+
+}  // namespace hrs::planning

@@ -1,0 +1,60 @@
+#pragma once
+// Nearest tree nodes for the RRT of §III-B, which first keeps the k nearest
+// nodes by a weighted Euclidean distance and then picks the one with the
+// shortest RS path among them. The distance is
+//   d(a, b) = |(xa, ya) − (xb, yb)| + w · |wrap(θa − θb)|
+// with w in metres per radian. Nodes are kept in an incremental kd-tree over
+// (x, y, θ) whose θ axis is a circle: the bound used for pruning measures the
+// angular gap to a cell the short way round, so poses near ±π are found.
+// While the structure is tiny a linear scan answers instead (it is faster).
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/pose.h"
+
+namespace hrs::planning {
+
+class PoseNearest {
+ public:
+  //! `heading_weight`: metres per radian in the distance (w above).
+  explicit PoseNearest(double heading_weight) : weight_(heading_weight) {}
+
+  //! The weighted distance used for ranking.
+  double distance(const geometry::Pose2& a, const geometry::Pose2& b) const;
+
+  //! Adds a pose with the caller's id (ids need not be dense).
+  void insert(const geometry::Pose2& pose, std::int32_t id);
+  //! Ids of the (at most) k nearest poses to `query`, nearest first; ties are
+  //! broken by insertion order, so the answer is deterministic.
+  void nearest(const geometry::Pose2& query, std::size_t k, std::vector<std::int32_t>& out) const;
+
+  std::size_t size() const { return nodes_.size(); }
+  void clear() { nodes_.clear(); }
+  double heading_weight() const { return weight_; }
+
+  //! Below this many poses a linear scan answers queries.
+  static constexpr std::size_t kLinearScanBelow = 32;
+
+ private:
+  struct Node {
+    double p[3];  //!< x, y, theta wrapped to (−pi, pi]
+    std::int32_t id;
+    std::int32_t child[2] = {-1, -1};
+  };
+  struct Candidate {
+    double d;
+    std::uint32_t order;  //!< insertion index, breaks ties
+    bool operator<(const Candidate& o) const { return d < o.d || (d == o.d && order < o.order); }
+  };
+  void search(std::int32_t node, int depth, const double q[3], double lo[3], double hi[3],
+              std::size_t k, std::vector<Candidate>& heap) const;
+  double point_distance(const double a[3], const double b[3]) const;
+  double box_bound(const double q[3], const double lo[3], const double hi[3]) const;
+
+  double weight_;
+  std::vector<Node> nodes_;  //!< nodes_[0] is the kd-tree root
+};
+
+}  // namespace hrs::planning

@@ -1,0 +1,24 @@
+#pragma once
+// Small operations on Reeds–Shepp paths that the planner needs when it grows
+// a tree edge by edge (§III-B) and joins legs into tours (§III-C): cutting a
+// path at an arc length, concatenating paths, normalising segment lists.
+
+#include <vector>
+
+#include "geometry/pose.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::planning {
+
+//! Segments shorter than this (metres) are dropped when paths are normalised.
+inline constexpr double kMinSegmentLength = 1e-12;
+
+//! Appends `segment` to `out`, merging it into the last segment when steer and
+//! gear agree and dropping it when it is shorter than kMinSegmentLength.
+void append_segment(std::vector<rs::Segment>& out, const rs::Segment& segment);
+//! The part of `path` between arc lengths `s0` and `s1` (clamped, s0 <= s1).
+rs::Path subpath(const rs::Path& path, double s0, double s1);
+//! Pose at the end of `path` driven from `start`.
+geometry::Pose2 end_pose(const geometry::Pose2& start, const rs::Path& path);
+
+}  // namespace hrs::planning

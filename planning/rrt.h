@@ -1,0 +1,162 @@
+#pragma once
+// The leg planner: RRT with Reeds–Shepp steering, the paper's baseline
+// (§III-B, after LaValle 1998 and Dolgov et al. 2008). Each iteration draws a
+// target: the goal with probability `goal_bias` (0.8), otherwise a sample.
+// Among the k = 10 tree nodes nearest by weighted Euclidean distance
+// (PoseNearest) it picks the one with the shortest RS path to the target and
+// drives that path: towards the goal the whole curve up to the first invalid
+// pose, towards a sample at most n = 5 steps of `step_length`. Every piece is
+// checked continuously (MotionValidator); a node is added every step along the
+// free part. The search ends when a node reaches the goal or after
+// `max_iterations`.
+//
+// Reuse hooks for the proposed planner (§V): the sample source (RS-
+// decomposition sampling, §V-A), the steering function (RS look-ups through
+// the decomposition) and an existing tree to grow (tree reuse, §V-C) are
+// injected; with the defaults (uniform samples, exact RS, a fresh tree) this
+// is the baseline. Hooks are called a few times per iteration, far from the
+// collision checks that dominate the cost.
+//
+// Thread-safety: a LegPlanner keeps all mutable state (engine, validator
+// counters, scratch) per instance and only reads the shared CSpace; use one
+// instance per thread. Results depend only on the inputs and the seed.
+
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "geometry/cspace.h"
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "planning/motion_validator.h"
+#include "planning/nearest.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::planning {
+
+using geometry::Pose2;
+
+//! Parameters of the baseline RRT (§III-B), with the paper's values.
+struct PlannerOptions {
+  double goal_bias = 0.8;        //!< probability of steering to the goal (paper: 80 %)
+  int k_nearest = 10;            //!< candidates by weighted distance before the RS pick (k)
+  int max_steps = 5;             //!< steps of the curve added towards a sample (n)
+  double step_length = 0.25;     //!< metres of curve per step and between tree nodes
+  double heading_weight = 0.7;   //!< metres per radian in the weighted distance
+  int max_iterations = 3000;     //!< cap: iterations before giving up (found = false)
+  int max_nodes = 20000;         //!< cap: tree size before giving up
+  double goal_tolerance = 1e-9;  //!< a node this close (metres + radians) is the goal
+};
+
+//! Statistics of one leg query.
+struct LegStats {
+  int iterations = 0;                  //!< RRT iterations run
+  int tree_nodes = 0;                  //!< nodes in the tree at the end (root included)
+  std::uint64_t collision_checks = 0;  //!< continuous segment/piece checks
+  double time_ms = 0.0;                //!< wall time of the query
+};
+
+//! Result of one leg query: the path from `from` to `to` when found.
+struct LegResult {
+  bool found = false;
+  rs::Path path;  //!< driven from the query's `from`; radius = the planner's radius
+  LegStats stats;
+};
+
+//! An RRT tree: node 0 is the root; every edge is a free RS sub-path from the
+//! parent's pose to the node's pose. Kept as plain data so that the proposed
+//! planner can store, prune and regrow it (§V-C).
+struct RrtTree {
+  struct Node {
+    Pose2 pose;
+    std::int32_t parent = -1;  //!< -1 for the root
+    rs::Path edge;             //!< from the parent's pose to `pose`
+    double cost = 0.0;         //!< arc length from the root
+  };
+  std::vector<Node> nodes;
+  const Pose2& root() const { return nodes.front().pose; }
+  //! The path from the root to node `index` (segments merged).
+  rs::Path path_to(std::int32_t index, double radius) const;
+};
+
+//! Where non-goal targets come from. Baseline: uniform in a box.
+class SampleSource {
+ public:
+  virtual ~SampleSource() = default;
+  //! A target pose; must draw randomness only from `rng`.
+  virtual Pose2 sample(std::mt19937_64& rng) = 0;
+};
+
+//! Uniform poses in an axis-aligned box times the heading circle (baseline).
+class UniformSampler final : public SampleSource {
+ public:
+  UniformSampler(double xmin, double ymin, double xmax, double ymax)
+      : xmin_(xmin), ymin_(ymin), xmax_(xmax), ymax_(ymax) {}
+  //! The bounding box of the scene's room.
+  static UniformSampler for_room(const geometry::Scene& scene);
+  Pose2 sample(std::mt19937_64& rng) override;
+
+ private:
+  double xmin_, ymin_, xmax_, ymax_;
+};
+
+//! The RS steering function. Baseline: the exact shortest path (rs/).
+class Steering {
+ public:
+  virtual ~Steering() = default;
+  //! RS length used to rank the k nearest nodes.
+  virtual double distance(const Pose2& from, const Pose2& to, double radius) = 0;
+  //! The RS path actually driven.
+  virtual rs::Path path(const Pose2& from, const Pose2& to, double radius) = 0;
+};
+
+//! Exact shortest RS paths (all 48 words).
+class ExactSteering final : public Steering {
+ public:
+  double distance(const Pose2& from, const Pose2& to, double radius) override;
+  rs::Path path(const Pose2& from, const Pose2& to, double radius) override;
+};
+
+//! Optional reuse hooks; null pointers mean the baseline behaviour.
+struct PlannerHooks {
+  SampleSource* sampler = nullptr;  //!< null: uniform in the room's box
+  Steering* steering = nullptr;     //!< null: exact RS
+};
+
+class LegPlanner {
+ public:
+  //! Plans in `cspace` (shared, read-only) for the scene's chair and room.
+  LegPlanner(const geometry::Scene& scene, const CSpace& cspace, PlannerOptions options = {},
+             PlannerHooks hooks = {});
+
+  //! Plans from `from` to `to` with a fresh tree; deterministic in `seed`.
+  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed);
+  //! Plans by growing `tree` (its root must be `from`, its edges free in the
+  //! current layout: the caller prunes, §V-C). The tree keeps its new nodes.
+  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree);
+
+  const PlannerOptions& options() const { return options_; }
+  double radius() const { return radius_; }
+  MotionValidator& validator() { return validator_; }
+
+ private:
+  //! Drives the RS path from node `from_node` towards `target` for at most
+  //! `max_length` metres, adding a node every step along its free prefix.
+  //! Returns the last node added, or -1 when none was.
+  std::int32_t extend(RrtTree& tree, std::int32_t from_node, const Pose2& target,
+                      double max_length);
+
+  const CSpace* cspace_;
+  PlannerOptions options_;
+  double radius_;
+  UniformSampler uniform_;
+  ExactSteering exact_;
+  SampleSource* sampler_;
+  Steering* steering_;
+  MotionValidator validator_;
+  PoseNearest nearest_;
+  std::vector<std::int32_t> knn_;
+};
+
+}  // namespace hrs::planning

@@ -1,0 +1,164 @@
+#pragma once
+// Tours (paper §III-C): the wheelchair leaves the door and stops at each
+// object of a sequence in order. Each object gets goal poses around it
+// (planning/goals.h); the door has one, its start pose. Consecutive legs join:
+// leg i starts where leg i−1 ended. From a start pose the goal poses of the
+// next object are tried in order of RS length; when no goal pose of object
+// i+1 can be reached from the chosen pose of object i, the search backtracks
+// to leg i and tries its next (longer) candidate: branch and bound, depth
+// first. A start pose whose subtree failed is remembered, so every leg
+// (start pose, goal pose) is planned at most once per tour, and documented
+// caps bound the effort of an impossible tour.
+//
+// Reuse hooks for the proposed planner (§V): a LegCache (path database,
+// §V-B) is consulted before each leg is planned, and every path it returns is
+// re-validated here with the continuous checks, so a stale path is never
+// returned; a TreeCache (§V-C) may hand the leg planner a tree to grow. The
+// baseline passes no hooks. Hooks are shared by the caller's choice and must
+// then be thread-safe themselves.
+//
+// Thread-safety: a TourPlanner reads the CSpace (shared, const) and keeps all
+// mutable state per instance: M tours run in parallel with M planners. Object
+// poses are read from the CSpace at each plan() (the optimizer moves objects
+// through CSpace::move_object between calls). Deterministic in the seed: each
+// leg's RRT seed is derived from the tour seed and the leg's key, not from
+// the order legs are tried.
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/cspace.h"
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "planning/goals.h"
+#include "planning/metrics.h"
+#include "planning/rrt.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::planning {
+
+//! Id of the start node in sequences (the door).
+inline constexpr std::string_view kDoorId = "door";
+
+struct TourOptions {
+  PlannerOptions planner;  //!< the leg planner (baseline RRT, §III-B)
+  GoalOptions goals;       //!< goal poses around objects
+  //! From one start pose, only the this many nearest (by RS length) goal poses
+  //! of the next object are planned to; the rest are never tried.
+  int max_candidates = 6;
+  //! Cap: leg plans (RRT queries) per tour; past it the tour is not found.
+  int max_leg_plans = 40;
+  //! Waypoint spacing of the returned legs (metres).
+  double waypoint_step = kWaypointStep;
+};
+
+//! Identifies a leg for the path database: object indices (−1: the door) and
+//! goal-pose slots (GoalPose::slot; 0 for the door).
+struct LegKey {
+  int from_object = -1;
+  int to_object = -1;
+  int from_slot = 0;
+  int to_slot = 0;
+  friend bool operator==(const LegKey&, const LegKey&) = default;
+};
+
+//! Path database hook (§V-B). lookup() may return any path: the tour planner
+//! validates it (ends at the poses, free in the current layout) and calls
+//! reject() when it is not valid.
+class LegCache {
+ public:
+  virtual ~LegCache() = default;
+  //! A candidate path from `from` to `to`, or false.
+  virtual bool lookup(const LegKey& key, const Pose2& from, const Pose2& to, rs::Path& out) = 0;
+  //! A path the planner found (valid in the current layout).
+  virtual void store(const LegKey& key, const Pose2& from, const Pose2& to,
+                     const rs::Path& path) = 0;
+  //! The path returned by lookup() for `key` was invalid now.
+  virtual void reject(const LegKey& key) = 0;
+};
+
+//! RRT tree reuse hook (§V-C): a tree rooted at `from` to grow, or nullptr
+//! for a fresh one. The cache owns the tree and has pruned invalid parts.
+class TreeCache {
+ public:
+  virtual ~TreeCache() = default;
+  virtual RrtTree* tree_for(const LegKey& key, const Pose2& from) = 0;
+};
+
+struct TourHooks {
+  LegCache* legs = nullptr;    //!< null: no path database (baseline)
+  TreeCache* trees = nullptr;  //!< null: a fresh tree per leg (baseline)
+  PlannerHooks planner;        //!< sampler / steering of the leg planner
+};
+
+//! How a leg's path was obtained.
+enum class LegSource { kPlanned, kReused };
+
+struct Leg {
+  std::string from_id, to_id;  //!< object ids ("door" for the start)
+  LegKey key;                  //!< object indices and goal slots
+  Pose2 from, to;
+  rs::Path path;                 //!< driven from `from`, scene radius
+  std::vector<Pose2> waypoints;  //!< every waypoint_step metres, ends included
+  PathMetrics metrics;
+  LegSource source = LegSource::kPlanned;
+  LegStats stats;  //!< of the RRT query that found it (zeros when reused)
+};
+
+struct TourStats {
+  int legs_planned = 0;   //!< RRT queries run
+  int legs_failed = 0;    //!< of which found nothing
+  int legs_reused = 0;    //!< paths taken from the LegCache
+  int legs_rejected = 0;  //!< LegCache paths invalid in the current layout
+  int backtracks = 0;     //!< returns to an earlier leg
+  int depth = 0;          //!< most legs joined at once (= sequence size − 1 when found)
+  bool capped = false;    //!< max_leg_plans was reached
+  std::uint64_t rrt_iterations = 0;
+  std::uint64_t collision_checks = 0;
+  double time_ms = 0.0;
+};
+
+struct Tour {
+  std::vector<std::string> sequence;  //!< starts with "door"
+  bool found = false;
+  std::vector<Leg> legs;  //!< sequence.size() − 1 joined legs when found, else empty
+  PathMetrics metrics;    //!< of the whole tour (zeros when not found)
+  TourStats stats;
+};
+
+class TourPlanner {
+ public:
+  //! `cspace` must outlive the planner; it is read, never modified.
+  TourPlanner(const geometry::Scene& scene, const CSpace& cspace, TourOptions options = {},
+              std::uint64_t seed = 1, TourHooks hooks = {});
+
+  //! Plans a tour of `sequence` ("door" first, then object ids) in the
+  //! CSpace's current layout. Unknown ids throw hrs::InputError.
+  Tour plan(const std::vector<std::string>& sequence);
+
+  //! Goal poses of `id` in the current layout ("door": its start pose).
+  std::vector<GoalPose> goals_for(std::string_view id) const;
+
+  const TourOptions& options() const { return options_; }
+  void set_seed(std::uint64_t seed) { seed_ = seed; }
+
+ private:
+  struct Stop;
+  bool search(std::vector<Stop>& stops, std::size_t level, int pose, std::vector<Leg>& legs,
+              Tour& tour);
+
+  const geometry::Scene* scene_;
+  const CSpace* cspace_;
+  TourOptions options_;
+  std::uint64_t seed_;
+  TourHooks hooks_;
+  LegPlanner planner_;
+  MotionValidator validator_;
+};
+
+//! The RRT seed of one leg: a hash of the tour seed and the key.
+std::uint64_t leg_seed(std::uint64_t tour_seed, const LegKey& key);
+
+}  // namespace hrs::planning
