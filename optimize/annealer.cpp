@@ -1,0 +1,132 @@
+#include "optimize/annealer.h"
+
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace hrs::optimize {
+
+double acceptance_probability(double delta, double t) {
+  if (delta <= 0.0) return 1.0;
+  if (!(t > 0.0)) return 0.0;
+  return std::exp(-delta / t);
+}
+
+bool metropolis_accept(double delta, double t, double u) {
+  return u < acceptance_probability(delta, t);
+}
+
+namespace {
+
+//! a·(b/a)^(k/(n−1)): geometric interpolation over the iterations.
+double geometric(double a, double b, int k, int n) {
+  if (n <= 1 || a <= 0.0 || b <= 0.0) return a;
+  return a * std::pow(b / a, static_cast<double>(k) / (n - 1));
+}
+
+}  // namespace
+
+double temperature_at(const AnnealOptions& options, int k) {
+  return geometric(options.t_start, options.t_end, k, options.iterations);
+}
+
+AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
+                    const AnnealOptions& options, const AnnealCallbacks& callbacks,
+                    std::mt19937_64& rng, const std::atomic<bool>* stop) {
+  assert(callbacks.move_valid && callbacks.cost);
+  assert(movable.size() == poses.size());
+  constexpr double kPi = std::numbers::pi;
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  std::vector<int> candidates;
+  for (std::size_t i = 0; i < movable.size(); ++i)
+    if (movable[i]) candidates.push_back(static_cast<int>(i));
+  auto layout_valid = [&](const std::vector<Pose2>& p) {
+    return !callbacks.layout_valid || callbacks.layout_valid(p);
+  };
+
+  AnnealResult result;
+  double current = callbacks.cost(poses, Move{});
+  result.initial_cost = current;
+  result.best = poses;
+  result.best_cost = kInf;
+  if (layout_valid(poses)) {
+    result.best_cost = current;
+    result.best_valid = true;
+    if (callbacks.new_best) callbacks.new_best();
+  }
+
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < options.iterations && !candidates.empty(); ++k) {
+    if (stop && stop->load()) {
+      result.stopped = true;
+      break;
+    }
+    TraceEntry e;
+    e.iteration = k;
+    e.temperature = temperature_at(options, k);
+    const double step = geometric(options.step_start, options.step_end, k, options.iterations);
+    const double shrink = options.step_start > 0.0 ? step / options.step_start : 1.0;
+
+    // Draws in a fixed order: object, kind, then the move's parameters.
+    const int object =
+        candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
+    Move move;
+    move.object = object;
+    move.from = poses[object];
+    move.to = move.from;
+    move.rotation = unit(rng) < options.rotate_probability;
+    if (move.rotation) {
+      const double kind = unit(rng);
+      const double r = unit(rng);
+      double turn;
+      if (kind < options.quarter_turn_probability) {
+        turn = r < 1.0 / 3.0 ? kPi / 2 : (r < 2.0 / 3.0 ? -kPi / 2 : kPi);
+      } else {
+        turn = (2.0 * r - 1.0) * kPi * shrink;
+      }
+      move.to.theta = geometry::wrap_angle(move.from.theta + turn);
+    } else {
+      move.to.x += (2.0 * unit(rng) - 1.0) * step;
+      move.to.y += (2.0 * unit(rng) - 1.0) * step;
+    }
+    const double u = unit(rng);
+    e.object = object;
+    e.rotation = move.rotation;
+
+    poses[object] = move.to;
+    e.valid = callbacks.move_valid(poses, object);
+    if (!e.valid) {
+      poses[object] = move.from;
+      e.proposed_cost = std::numeric_limits<double>::quiet_NaN();
+    } else {
+      ++result.valid_proposals;
+      const double proposed = callbacks.cost(poses, move);
+      e.proposed_cost = proposed;
+      e.accepted = metropolis_accept(proposed - current, e.temperature, u);
+      if (e.accepted) {
+        ++result.accepted;
+        current = proposed;
+        if (current < result.best_cost && layout_valid(poses)) {
+          result.best_cost = current;
+          result.best = poses;
+          result.best_valid = true;
+          if (callbacks.new_best) callbacks.new_best();
+        }
+      } else {
+        poses[object] = move.from;
+        if (callbacks.rejected) callbacks.rejected(move);
+      }
+    }
+    e.current_cost = current;
+    e.best_cost = result.best_cost;
+    ++result.proposals;
+    result.trace.push_back(e);
+    if (callbacks.progress) callbacks.progress(e);
+  }
+  result.final_poses = poses;
+  result.final_cost = current;
+  return result;
+}
+
+}  // namespace hrs::optimize

@@ -1,0 +1,167 @@
+// The annealer on toy costs: finds a known optimum, the Metropolis rule is
+// exact, fixed objects never move, invalid moves are never evaluated.
+#include "optimize/annealer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace hrs::optimize {
+namespace {
+
+TEST(Annealer, AcceptanceProbabilityIsMetropolis) {
+  EXPECT_EQ(acceptance_probability(-1.0, 0.5), 1.0);
+  EXPECT_EQ(acceptance_probability(0.0, 0.5), 1.0);
+  EXPECT_DOUBLE_EQ(acceptance_probability(1.0, 0.5), std::exp(-2.0));
+  EXPECT_DOUBLE_EQ(acceptance_probability(0.3, 2.0), std::exp(-0.15));
+  EXPECT_EQ(acceptance_probability(1.0, 0.0), 0.0);
+  EXPECT_TRUE(metropolis_accept(0.1, 1.0, std::exp(-0.1) - 1e-12));
+  EXPECT_FALSE(metropolis_accept(0.1, 1.0, std::exp(-0.1)));
+  EXPECT_TRUE(metropolis_accept(-5.0, 1e-9, 0.999999));
+}
+
+TEST(Annealer, CoolingIsGeometricFromStartToEnd) {
+  AnnealOptions o;
+  o.iterations = 11;
+  o.t_start = 2.0;
+  o.t_end = 2e-3;
+  EXPECT_DOUBLE_EQ(temperature_at(o, 0), 2.0);
+  EXPECT_NEAR(temperature_at(o, 10), 2e-3, 1e-15);
+  for (int k = 1; k < 10; ++k)
+    EXPECT_NEAR(temperature_at(o, k + 1) / temperature_at(o, k), std::pow(1e-3, 0.1), 1e-12);
+}
+
+// Every valid proposal raises the cost by exactly delta at a constant
+// temperature: the acceptance rate must be exp(−delta/t).
+TEST(Annealer, EmpiricalAcceptanceRateMatchesExpMinusDeltaOverT) {
+  for (double ratio : {0.1, 0.5, 1.0, 2.0}) {
+    AnnealOptions o;
+    o.iterations = 20000;
+    o.t_start = o.t_end = 0.7;
+    const double delta = ratio * 0.7;
+    double current = 0.0;
+    AnnealCallbacks cb;
+    cb.move_valid = [](const std::vector<Pose2>&, int) { return true; };
+    cb.cost = [&](const std::vector<Pose2>&, const Move& m) {
+      return m.object < 0 ? 0.0 : current + delta;
+    };
+    cb.progress = [&](const TraceEntry& e) { current = e.current_cost; };
+    std::mt19937_64 rng(7);
+    const auto r = anneal({Pose2{}}, {true}, o, cb, rng);
+    const double p = std::exp(-ratio);
+    const double rate = static_cast<double>(r.accepted) / r.valid_proposals;
+    const double sigma = std::sqrt(p * (1 - p) / r.valid_proposals);
+    EXPECT_NEAR(rate, p, 4.5 * sigma) << "delta/t = " << ratio;
+    EXPECT_EQ(r.valid_proposals, o.iterations);
+  }
+}
+
+TEST(Annealer, FindsTheKnownOptimumOfAToyCostAndNeverMovesFixedObjects) {
+  // Two movable objects in the box [0, 4]², at least 0.5 apart, pulled to
+  // targets; a third object is fixed. Optimum: the targets, cost 0.
+  const Pose2 fixed{3.5, 3.5, 0.25};
+  const Pose2 target0{1.0, 2.5, 1.2}, target1{3.0, 0.7, -2.9};
+  auto sq = [](double v) { return v * v; };
+  AnnealCallbacks cb;
+  cb.move_valid = [&](const std::vector<Pose2>& p, int moved) {
+    EXPECT_NE(moved, 2);
+    const Pose2& q = p[moved];
+    if (q.x < 0 || q.x > 4 || q.y < 0 || q.y > 4) return false;
+    return std::hypot(p[0].x - p[1].x, p[0].y - p[1].y) >= 0.5;
+  };
+  cb.cost = [&](const std::vector<Pose2>& p, const Move&) {
+    EXPECT_EQ(p[2], fixed);
+    double c = 0.0;
+    for (int i = 0; i < 2; ++i) {
+      const Pose2& t = i == 0 ? target0 : target1;
+      c += sq(p[i].x - t.x) + sq(p[i].y - t.y) + sq(geometry::wrap_angle(p[i].theta - t.theta));
+    }
+    return c;
+  };
+  AnnealOptions o;
+  o.iterations = 4000;
+  o.t_start = 2.0;
+  o.t_end = 1e-5;
+  o.step_end = 0.005;
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    std::mt19937_64 rng(seed);
+    const auto r =
+        anneal({{0.5, 0.5, 0.0}, {0.6, 0.6, 3.0}, fixed}, {true, true, false}, o, cb, rng);
+    ASSERT_TRUE(r.best_valid);
+    EXPECT_LT(r.best_cost, 1e-3) << "seed " << seed;
+    EXPECT_NEAR(r.best[0].x, target0.x, 0.03);
+    EXPECT_NEAR(r.best[0].y, target0.y, 0.03);
+    EXPECT_NEAR(r.best[1].theta, target1.theta, 0.03);
+    EXPECT_EQ(r.best[2], fixed);
+    EXPECT_LT(r.best_cost, r.initial_cost);
+  }
+}
+
+TEST(Annealer, InvalidMovesAreNeverEvaluated) {
+  int evaluations = 0;
+  AnnealCallbacks cb;
+  cb.move_valid = [](const std::vector<Pose2>&, int) { return false; };
+  cb.cost = [&](const std::vector<Pose2>&, const Move&) { return ++evaluations, 1.0; };
+  AnnealOptions o;
+  o.iterations = 100;
+  std::mt19937_64 rng(3);
+  const auto r = anneal({{1, 1, 0}, {2, 2, 0}}, {true, true}, o, cb, rng);
+  EXPECT_EQ(evaluations, 1);  // the initial layout only
+  EXPECT_EQ(r.valid_proposals, 0);
+  EXPECT_EQ(r.accepted, 0);
+  EXPECT_EQ(r.final_poses, (std::vector<Pose2>{{1, 1, 0}, {2, 2, 0}}));
+  for (const auto& e : r.trace) EXPECT_TRUE(std::isnan(e.proposed_cost));
+}
+
+TEST(Annealer, RejectedMovesAreUndoneAndReported) {
+  int rejected = 0;
+  AnnealCallbacks cb;
+  cb.move_valid = [](const std::vector<Pose2>&, int) { return true; };
+  cb.cost = [](const std::vector<Pose2>&, const Move& m) { return m.object < 0 ? 0.0 : 1e9; };
+  cb.rejected = [&](const Move& m) {
+    ++rejected;
+    EXPECT_NE(m.from, m.to);
+  };
+  AnnealOptions o;
+  o.iterations = 200;
+  std::mt19937_64 rng(4);
+  const auto r = anneal({{1, 1, 0}}, {true}, o, cb, rng);
+  EXPECT_EQ(rejected, 200);
+  EXPECT_EQ(r.accepted, 0);
+  EXPECT_EQ(r.final_poses[0], (Pose2{1, 1, 0}));
+  EXPECT_EQ(r.best_cost, 0.0);
+}
+
+TEST(Annealer, BestIsTheMinimumOverValidAcceptedLayoutsAndRunsAreSeeded) {
+  AnnealCallbacks cb;
+  cb.move_valid = [](const std::vector<Pose2>& p, int) { return std::abs(p[0].x) < 3; };
+  cb.cost = [](const std::vector<Pose2>& p, const Move&) {
+    return std::sin(3 * p[0].x) + 0.1 * p[0].y * p[0].y;
+  };
+  // Layouts with y < 0 count as not fully valid: never the best.
+  cb.layout_valid = [](const std::vector<Pose2>& p) { return p[0].y >= 0; };
+  AnnealOptions o;
+  o.iterations = 500;
+  std::mt19937_64 a(11), b(11);
+  const auto r1 = anneal({{0, 1, 0}}, {true}, o, cb, a);
+  const auto r2 = anneal({{0, 1, 0}}, {true}, o, cb, b);
+  ASSERT_EQ(r1.trace.size(), r2.trace.size());
+  for (std::size_t i = 0; i < r1.trace.size(); ++i)
+    EXPECT_EQ(r1.trace[i].current_cost, r2.trace[i].current_cost);
+  EXPECT_EQ(r1.best, r2.best);
+  EXPECT_GE(r1.best[0].y, 0.0);
+  double min_valid = r1.initial_cost;
+  double previous = r1.initial_cost;
+  for (const auto& e : r1.trace) {
+    EXPECT_LE(e.best_cost, previous);  // never forgets a better layout
+    previous = e.best_cost;
+    min_valid = std::min(min_valid, e.best_cost);
+  }
+  EXPECT_EQ(r1.best_cost, min_valid);
+  EXPECT_NEAR(r1.best_cost, std::sin(3 * r1.best[0].x) + 0.1 * r1.best[0].y * r1.best[0].y, 1e-12);
+}
+
+}  // namespace
+}  // namespace hrs::optimize
