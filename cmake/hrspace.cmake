@@ -18,7 +18,16 @@ function(hrspace_ompl_target)
   if(NOT TARGET hrspace_ompl)
     add_library(hrspace_ompl INTERFACE)
     target_include_directories(hrspace_ompl SYSTEM INTERFACE ${OMPL_INCLUDE_DIRS})
-    target_link_libraries(hrspace_ompl INTERFACE ${OMPL_LIBRARIES})
+    # omplConfig lists boost's unversioned .so files, which exist only with the
+    # boost -dev packages; libompl.so records its own runtime dependencies, so
+    # skip listed files that are missing.
+    set(_ompl_libs "")
+    foreach(_lib ${OMPL_LIBRARIES})
+      if(NOT IS_ABSOLUTE "${_lib}" OR EXISTS "${_lib}")
+        list(APPEND _ompl_libs "${_lib}")
+      endif()
+    endforeach()
+    target_link_libraries(hrspace_ompl INTERFACE ${_ompl_libs})
   endif()
 endfunction()
 

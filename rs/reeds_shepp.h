@@ -6,8 +6,15 @@
 // API contract used by planning/ (the rs issue may extend, not break it):
 //   rs::Segment, rs::Steer, rs::Path, rs::shortest_path, rs::shortest_length,
 //   rs::pose_at, rs::sample.
+//
+// The shortest path is the minimum over the 48 words of Reeds and Shepp's
+// sufficient family (CSC, CCC, CCCC, CCSC, CCSCC with time-flip, reflection
+// and backwards symmetries), evaluated in closed form with shared trigonometry
+// and lower-bound pruning; see rs/reeds_shepp.cpp for the formulas' sources.
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -40,12 +47,51 @@ struct Path {
 Pose2 advance(const Pose2& start, const Segment& segment, double radius);
 //! Pose at arc length s (clamped to [0, length]) along `path` from `start`.
 Pose2 pose_at(const Pose2& start, const Path& path, double s);
-//! Poses from start to end at most `step` metres apart, both ends included.
+//! Poses from start to end at most `step` metres apart, both ends included
+//! (a zero-length path gives the start pose once). Requires step > 0.
 std::vector<Pose2> sample(const Pose2& start, const Path& path, double step);
 
 //! The exact shortest RS path from `from` to `to` (all 48 words).
+//! Requires radius > 0. Segments shorter than ~1e-11 radius are dropped, so
+//! identical poses give an empty path and collinear ones a single "S".
 Path shortest_path(const Pose2& from, const Pose2& to, double radius);
 //! Its length only (no allocation).
 double shortest_length(const Pose2& from, const Pose2& to, double radius);
+
+// ---- Additions beyond the planner's contract ------------------------------
+
+//! Number of words in Reeds and Shepp's sufficient family.
+inline constexpr int kWordCount = 48;
+
+//! Name of word `id` in [0, kWordCount), e.g. "L+R-S-L-" (the nominal word:
+//! it keeps segments that happen to have zero length in a given query).
+std::string_view word_name(int id);
+//! Id of a word name such as "L+S+R-"; -1 when it is not one of the 48.
+int word_id(std::string_view name);
+
+//! Length (metres) and word id of the shortest path.
+struct ShortestWord {
+  double length = 0.0;  //!< metres
+  int word = 0;         //!< in [0, kWordCount)
+};
+//! The shortest path's length and word (no allocation); same result as
+//! shortest_path().
+ShortestWord shortest_word(const Pose2& from, const Pose2& to, double radius);
+
+//! Length of the shortest path of one given word from `from` to `to`, or
+//! +infinity when that word cannot connect them (no allocation). Evaluated by
+//! a separate, plain implementation of the formulas.
+double word_length(int word, const Pose2& from, const Pose2& to, double radius);
+//! The path of one given word, or nullopt when that word cannot connect them.
+std::optional<Path> word_path(int word, const Pose2& from, const Pose2& to, double radius);
+
+//! Pose at the end of `path` driven from `start`.
+Pose2 end_pose(const Pose2& start, const Path& path);
+//! The same curve driven from its end back to its start: segments in reverse
+//! order with the gear flipped.
+Path reversed(const Path& path);
+//! `first` followed by `second` (radii must match); equal adjacent segments
+//! (same steer and gear) are merged.
+Path concatenate(const Path& first, const Path& second);
 
 }  // namespace hrs::rs

@@ -1,0 +1,719 @@
+// Reeds–Shepp shortest paths (paper §III-B, §V-A).
+//
+// Formulas: J. A. Reeds and L. A. Shepp, "Optimal paths for a car that goes
+// both forwards and backwards", Pacific J. Math. 145(2), 1990, §8, eqs.
+// 8.1–8.11 (with the corrections of 8.3/8.4 and 8.11 noted in OMPL's
+// ReedsSheppStateSpace by M. Moll, and the presentation in S. M. LaValle,
+// "Planning Algorithms", 2006, §15.3.2). Written from those equations; the
+// structure here differs from OMPL's:
+//  * The query is normalised once (start at the origin heading +x, unit
+//    radius). Every formula reads one of two points, A = (x - sin φ,
+//    y - 1 + cos φ) or B = (x + sin φ, y - 1 - cos φ); the time-flipped query
+//    (-x, y, -φ) sees (-A.x, A.y) and (-B.x, B.y), so one sqrt and one atan2
+//    serve both (the angle becomes π - θ). Angles that depend only on |A| or
+//    |B| (atan2(2, u), asin, acos, the tauOmega rotation) are shared likewise.
+//  * Each (formula, symmetry pair) has a lower bound from |A| or |B| alone and
+//    the heading change; it is skipped when the bound is not below the best
+//    length so far, before any atan2/asin/acos is evaluated.
+//  * Sign constraints accept rounding noise (|value| <= kTol is snapped to
+//    zero, an angle of -π counts as +π), where OMPL rejects values below
+//    -10 ε; this finds the true minimum at family boundaries.
+// word_length()/word_path() evaluate single words by a separate, direct
+// transcription of the formulas (used by the tests as an independent check).
+
+#include "rs/reeds_shepp.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace hrs::rs {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kHalfPi = 0.5 * std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+//! Rounding tolerance on path parameters, in units of the turning radius.
+constexpr double kTol = 1e-11;
+
+//! Wraps to [-π, π]; inputs here are sums of a few angles (|a| < 8π).
+inline double mod2pi(double a) {
+  while (a > kPi) a -= kTwoPi;
+  while (a < -kPi) a += kTwoPi;
+  return a;
+}
+
+//! Makes an arc angle that must be >= 0 valid: snaps rounding noise to 0 and
+//! reads -π as +π. False when the angle is genuinely negative.
+inline bool nonneg(double& a) {
+  if (a >= 0.0) return true;
+  if (a >= -kTol) {
+    a = 0.0;
+    return true;
+  }
+  if (a <= -kPi + kTol) {
+    a += kTwoPi;
+    return true;
+  }
+  return false;
+}
+//! Mirror of nonneg() for parameters that must be <= 0.
+inline bool nonpos(double& a) {
+  if (a <= 0.0) return true;
+  if (a <= kTol) {
+    a = 0.0;
+    return true;
+  }
+  if (a >= kPi - kTol) {
+    a -= kTwoPi;
+    return true;
+  }
+  return false;
+}
+//! Non-angular parameter (straight length) that must be <= 0.
+inline bool nonpos_len(double& a) {
+  if (a <= 0.0) return true;
+  if (a <= kTol) {
+    a = 0.0;
+    return true;
+  }
+  return false;
+}
+
+// ---- Candidates and words ---------------------------------------------------
+
+//! The base formulas of Reeds & Shepp §8 (each for the "L+" first arc).
+enum Formula : int {
+  kLSL = 0,    //!< 8.1  L+S+L+
+  kLSR = 1,    //!< 8.2  L+S+R+
+  kLRL = 2,    //!< 8.3  L+R-L± (C|C|C, C|CC)
+  kLRLRa = 3,  //!< 8.7  L+R+L-R- (CCu|CuC)
+  kLRLRb = 4,  //!< 8.8  L+R-L-R+ (C|CuCu|C)
+  kLRSL = 5,   //!< 8.9  L+R-(π/2)S-L-
+  kLRSR = 6,   //!< 8.10 L+R-(π/2)S-R-
+  kLRSLR = 7,  //!< 8.11 L+R-(π/2)S-L-(π/2)R+
+};
+constexpr int kTimeflip = 8;
+constexpr int kReflect = 16;
+constexpr int kBackwards = 32;
+constexpr int kCodeCount = 64;
+
+//! Segment values (signed, unit radius) and steering of one candidate.
+struct Raw {
+  std::array<double, 5> value{};
+  std::array<Steer, 5> steer{};
+  int n = 0;
+};
+
+//! Builds the segments of candidate `code` with parameters (t, u, v).
+Raw raw_segments(int code, double t, double u, double v) {
+  constexpr Steer L = Steer::kLeft, R = Steer::kRight, S = Steer::kStraight;
+  Raw r;
+  auto put = [&r](Steer s, double x) {
+    r.steer[r.n] = s;
+    r.value[r.n] = x;
+    ++r.n;
+  };
+  switch (code & 7) {
+    case kLSL:
+      put(L, t), put(S, u), put(L, v);
+      break;
+    case kLSR:
+      put(L, t), put(S, u), put(R, v);
+      break;
+    case kLRL:
+      put(L, t), put(R, u), put(L, v);
+      break;
+    case kLRLRa:
+      put(L, t), put(R, u), put(L, -u), put(R, v);
+      break;
+    case kLRLRb:
+      put(L, t), put(R, u), put(L, u), put(R, v);
+      break;
+    case kLRSL:
+      put(L, t), put(R, -kHalfPi), put(S, u), put(L, v);
+      break;
+    case kLRSR:
+      put(L, t), put(R, -kHalfPi), put(S, u), put(R, v);
+      break;
+    default:
+      put(L, t), put(R, -kHalfPi), put(S, u), put(L, -kHalfPi), put(R, v);
+      break;
+  }
+  if (code & kTimeflip)
+    for (int i = 0; i < r.n; ++i) r.value[i] = -r.value[i];
+  if (code & kReflect)
+    for (int i = 0; i < r.n; ++i)
+      if (r.steer[i] != S) r.steer[i] = r.steer[i] == L ? R : L;
+  if (code & kBackwards) {
+    std::reverse(r.value.begin(), r.value.begin() + r.n);
+    std::reverse(r.steer.begin(), r.steer.begin() + r.n);
+  }
+  return r;
+}
+
+//! Nominal gear of each base parameter slot (the sign the formula enforces);
+//! for 8.3 the last arc's gear is the sign of v.
+std::string nominal_name(int code, bool v_negative) {
+  // Use unit-magnitude stand-ins with the enforced signs.
+  const int f = code & 7;
+  double t = 1.0, u = -1.0, v = 1.0;
+  if (f == kLSL || f == kLSR) u = 1.0;
+  if (f == kLRL) v = v_negative ? -1.0 : 1.0;
+  if (f == kLRLRa) u = 1.0, v = -1.0;
+  if (f == kLRSL || f == kLRSR) v = -1.0;
+  const Raw r = raw_segments(code, t, u, v);
+  std::string name;
+  for (int i = 0; i < r.n; ++i) {
+    name += static_cast<char>(r.steer[i]);
+    name += r.value[i] < 0.0 ? '-' : '+';
+  }
+  return name;
+}
+
+bool code_exists(int code) {
+  const int f = code & 7;
+  return !(code & kBackwards) || f == kLRL || f == kLRSL || f == kLRSR;
+}
+
+struct WordTable {
+  std::array<std::string, kWordCount> names;
+  //! word id of [code][v < 0]; -1 for codes that do not exist.
+  std::array<std::array<int, 2>, kCodeCount> id{};
+  //! candidate codes (and required sign of v, 0 = any) producing each word.
+  std::array<std::vector<std::pair<int, int>>, kWordCount> sources;
+
+  WordTable() {
+    int count = 0;
+    for (int code = 0; code < kCodeCount; ++code) {
+      for (int neg = 0; neg < 2; ++neg) {
+        id[code][neg] = -1;
+        if (!code_exists(code)) continue;
+        const std::string name = nominal_name(code, neg == 1);
+        int found = -1;
+        for (int w = 0; w < count; ++w)
+          if (names[w] == name) found = w;
+        if (found < 0) {
+          assert(count < kWordCount);
+          found = count;
+          names[count++] = name;
+        }
+        id[code][neg] = found;
+        const int vsign = (code & 7) == kLRL ? (neg ? -1 : 1) : 0;
+        if ((code & 7) == kLRL || neg == 0) sources[found].push_back({code, vsign});
+      }
+    }
+    assert(count == kWordCount);
+  }
+};
+
+const WordTable& table() {
+  static const WordTable t;
+  return t;
+}
+
+//! Word of candidate `code` with base parameter v (only 8.3 depends on it;
+//! v is the formula's value, before the time-flip negates the segments).
+int word_of(int code, double v) { return table().id[code][v < 0.0 ? 1 : 0]; }
+
+// ---- Normalisation ----------------------------------------------------------
+
+//! The goal seen from the start, scaled to unit radius.
+struct Local {
+  double x = 0.0, y = 0.0, phi = 0.0;
+};
+
+Local to_local(const Pose2& from, const Pose2& to, double radius) {
+  assert(radius > 0.0);
+  const double c = std::cos(from.theta), s = std::sin(from.theta);
+  const double dx = to.x - from.x, dy = to.y - from.y;
+  const double inv = 1.0 / radius;
+  return {(c * dx + s * dy) * inv, (-s * dx + c * dy) * inv,
+          geometry::wrap_angle(to.theta - from.theta)};
+}
+
+//! Snaps rounding noise to zero and sums the magnitudes.
+double snapped_length(Raw& r) {
+  double len = 0.0;
+  for (int i = 0; i < r.n; ++i) {
+    if (std::abs(r.value[i]) <= kTol) r.value[i] = 0.0;
+    len += std::abs(r.value[i]);
+  }
+  return len;
+}
+
+// ---- The fast solver --------------------------------------------------------
+
+struct Best {
+  double len = kInf;
+  int code = 0;
+  double t = 0.0, u = 0.0, v = 0.0;
+  void offer(double l, int c, double tt, double uu, double vv) {
+    if (l < len) len = l, code = c, t = tt, u = uu, v = vv;
+  }
+};
+
+//! Evaluates the formulas for the query (X, Y, Φ) and its time-flip
+//! (-X, Y, -Φ); S, C are sin Φ and cos Φ. `flags` adds kReflect/kBackwards
+//! to the codes. `hb` = |Φ| is a lower bound on the total arc length.
+inline void solve_pair(double X, double Y, double phi, double S, double C, int flags, double hb,
+                       Best& best) {
+  const bool backwards = flags & kBackwards;
+  const double ax = X - S, ay = Y - 1.0 + C;
+  const double bx = X + S, by = Y - 1.0 - C;
+  const double ra2 = ax * ax + ay * ay, rb2 = bx * bx + by * by;
+  const double ra = std::sqrt(ra2), rb = std::sqrt(rb2);
+  double theta_a = 0.0, theta_b = 0.0;
+  bool have_a = false, have_b = false;
+  auto angle_a = [&]() {
+    if (!have_a) theta_a = std::atan2(ay, ax), have_a = true;
+    return theta_a;
+  };
+  auto angle_b = [&]() {
+    if (!have_b) theta_b = std::atan2(by, bx), have_b = true;
+    return theta_b;
+  };
+  const double phis[2] = {phi, -phi};
+
+  if (!backwards) {
+    // 8.1 L+S+L+: A = u (cos t, sin t), v = φ - t.
+    if (ra + hb < best.len) {
+      const double th[2] = {angle_a(), kPi - angle_a()};
+      for (int m = 0; m < 2; ++m) {
+        double t = mod2pi(th[m]);
+        if (!nonneg(t)) continue;
+        double v = mod2pi(phis[m] - t);
+        if (!nonneg(v)) continue;
+        best.offer(t + ra + v, kLSL | flags | (m ? kTimeflip : 0), t, ra, v);
+      }
+    }
+    // 8.2 L+S+R+: |B|² = u² + 4, t = θ_B + atan2(2, u), v = t - φ.
+    if (rb2 >= 4.0 - kTol) {
+      const double u = std::sqrt(std::max(0.0, rb2 - 4.0));
+      if (u + hb < best.len) {
+        const double alpha = std::atan2(2.0, u);
+        const double th[2] = {angle_b(), kPi - angle_b()};
+        for (int m = 0; m < 2; ++m) {
+          double t = mod2pi(th[m] + alpha);
+          if (!nonneg(t)) continue;
+          double v = mod2pi(t - phis[m]);
+          if (!nonneg(v)) continue;
+          best.offer(t + u + v, kLSR | flags | (m ? kTimeflip : 0), t, u, v);
+        }
+      }
+    }
+  }
+  // 8.3 L+R-L±: |A| = 4 sin(-u/2), t = θ_A + u/2 + π, v = φ - t + u.
+  // Lower bound |u| = 2 asin(|A|/4) >= |A|/2.
+  if (ra <= 4.0 + kTol && std::max(0.5 * ra, hb) < best.len) {
+    const double u = -2.0 * std::asin(std::min(1.0, 0.25 * ra));
+    if (std::max(-u, hb) < best.len) {
+      const double th[2] = {angle_a(), kPi - angle_a()};
+      for (int m = 0; m < 2; ++m) {
+        double t = mod2pi(th[m] + 0.5 * u + kPi);
+        if (!nonneg(t)) continue;
+        const double v = mod2pi(phis[m] - t + u);
+        best.offer(t - u + std::abs(v), kLRL | flags | (m ? kTimeflip : 0), t, u, v);
+      }
+    }
+  }
+  if (!backwards) {
+    // 8.7 L+R+L-R-: ρ = (2 + |B|)/4 = cos u; tauOmega with v = -u, where
+    // atan2(ηA' - ξB', ξA' + ηB') = θ_B + atan2(-B', A').
+    const double rho7 = 0.25 * (2.0 + rb);
+    if (rho7 <= 1.0 + kTol &&
+        std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho7)), hb) < best.len) {
+      const double u = std::acos(std::min(1.0, rho7));
+      if (std::max(2.0 * u, hb) < best.len) {
+        const double delta = mod2pi(2.0 * u);
+        const double su = std::sin(u), cu = std::cos(u);
+        const double sd = std::sin(delta), cd = std::cos(delta);
+        const double a_ = su - sd, b_ = cu - cd - 1.0;
+        const double rot = std::atan2(-b_, a_);
+        const double flip = 2.0 * (cd - 2.0 * cu) + 3.0 < 0.0 ? kPi : 0.0;
+        const double th[2] = {angle_b(), kPi - angle_b()};
+        for (int m = 0; m < 2; ++m) {
+          double t = mod2pi(th[m] + rot + flip);
+          if (!nonneg(t)) continue;
+          double v = mod2pi(t - 2.0 * u - phis[m]);
+          if (!nonpos(v)) continue;
+          best.offer(t + 2.0 * u - v, kLRLRa | flags | (m ? kTimeflip : 0), t, u, v);
+        }
+      }
+    }
+    // 8.8 L+R-L-R+: ρ = (20 - |B|²)/16 = cos u, u in [-π/2, 0]; tauOmega with
+    // v = u (δ = 0, so the flip term 5 - 4 cos u is always positive).
+    const double rho8 = (20.0 - rb2) / 16.0;
+    if (rho8 >= -kTol && rho8 <= 1.0 + kTol &&
+        std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho8)), hb) < best.len) {
+      const double u = -std::acos(std::clamp(rho8, 0.0, 1.0));
+      if (std::max(-2.0 * u, hb) < best.len) {
+        const double rot = std::atan2(2.0 - std::cos(u), std::sin(u));
+        const double th[2] = {angle_b(), kPi - angle_b()};
+        for (int m = 0; m < 2; ++m) {
+          double t = mod2pi(th[m] + rot);
+          if (!nonneg(t)) continue;
+          double v = mod2pi(t - phis[m]);
+          if (!nonneg(v)) continue;
+          best.offer(t - 2.0 * u + v, kLRLRb | flags | (m ? kTimeflip : 0), t, u, v);
+        }
+      }
+    }
+  }
+  const double hb_half = std::max(kHalfPi, hb);
+  // 8.9 L+R-(π/2)S-L-: |A|² = 4 + (2 - u)², t = θ_A + atan2(r, -2),
+  // v = φ - π/2 - t. Needs u <= 0, i.e. r >= 2.
+  if (ra2 >= 8.0 - kTol) {
+    const double r = std::sqrt(ra2 - 4.0);
+    double u = 2.0 - r;
+    if (nonpos_len(u) && -u + hb_half < best.len) {
+      const double alpha = std::atan2(r, -2.0);
+      const double th[2] = {angle_a(), kPi - angle_a()};
+      for (int m = 0; m < 2; ++m) {
+        double t = mod2pi(th[m] + alpha);
+        if (!nonneg(t)) continue;
+        double v = mod2pi(phis[m] - kHalfPi - t);
+        if (!nonpos(v)) continue;
+        best.offer(t + kHalfPi - u - v, kLRSL | flags | (m ? kTimeflip : 0), t, u, v);
+      }
+    }
+  }
+  // 8.10 L+R-(π/2)S-R-: (-η, ξ) = |B| (cos t, sin t), u = 2 - |B|,
+  // v = t + π/2 - φ.
+  if (rb >= 2.0 - kTol) {
+    double u = 2.0 - rb;
+    if (nonpos_len(u) && -u + hb_half < best.len) {
+      const double th[2] = {angle_b(), kPi - angle_b()};
+      for (int m = 0; m < 2; ++m) {
+        double t = mod2pi(th[m] + kHalfPi);
+        if (!nonneg(t)) continue;
+        double v = mod2pi(t + kHalfPi - phis[m]);
+        if (!nonpos(v)) continue;
+        best.offer(t + kHalfPi - u - v, kLRSR | flags | (m ? kTimeflip : 0), t, u, v);
+      }
+    }
+  }
+  // 8.11 L+R-(π/2)S-L-(π/2)R+: |B|² = 4 + (4 - u)², t = θ_B + atan2(4 - u, -2),
+  // v = t - φ. Needs u <= 0, i.e. |B|² >= 20.
+  if (!backwards && rb2 >= 20.0 - kTol) {
+    const double r = std::sqrt(rb2 - 4.0);
+    double u = 4.0 - r;
+    if (nonpos_len(u) && -u + std::max(kPi, hb) < best.len) {
+      const double alpha = std::atan2(r, -2.0);
+      const double th[2] = {angle_b(), kPi - angle_b()};
+      for (int m = 0; m < 2; ++m) {
+        double t = mod2pi(th[m] + alpha);
+        if (!nonneg(t)) continue;
+        double v = mod2pi(t - phis[m]);
+        if (!nonneg(v)) continue;
+        best.offer(t + kPi - u + v, kLRSLR | flags | (m ? kTimeflip : 0), t, u, v);
+      }
+    }
+  }
+}
+
+Best solve(const Local& q) {
+  const double s = std::sin(q.phi), c = std::cos(q.phi);
+  const double hb = std::abs(q.phi);
+  Best best;
+  // Forward words first (CSC usually wins far away), then the reflection,
+  // then the backwards words seen from the goal.
+  solve_pair(q.x, q.y, q.phi, s, c, 0, hb, best);
+  solve_pair(q.x, -q.y, -q.phi, -s, c, kReflect, hb, best);
+  const double xb = q.x * c + q.y * s, yb = q.x * s - q.y * c;
+  solve_pair(xb, yb, q.phi, s, c, kBackwards, hb, best);
+  solve_pair(xb, -yb, -q.phi, -s, c, kBackwards | kReflect, hb, best);
+  return best;
+}
+
+// ---- The plain single-candidate evaluator -----------------------------------
+
+//! Parameters (t, u, v) of candidate `code` for the normalised query; false
+//! when the candidate's sign constraints fail. Direct transcription of
+//! Reeds & Shepp eqs. 8.1–8.11 (no shared terms), as an independent check.
+bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
+  double x = q.x, y = q.y, phi = q.phi;
+  if (code & kBackwards) {
+    const double xb = x * std::cos(phi) + y * std::sin(phi);
+    const double yb = x * std::sin(phi) - y * std::cos(phi);
+    x = xb, y = yb;
+  }
+  if (code & kTimeflip) x = -x, phi = -phi;
+  if (code & kReflect) y = -y, phi = -phi;
+  const double sp = std::sin(phi), cp = std::cos(phi);
+  switch (code & 7) {
+    case kLSL: {
+      const double xi = x - sp, eta = y - 1.0 + cp;
+      u = std::hypot(xi, eta);
+      t = std::atan2(eta, xi);
+      if (!nonneg(t)) return false;
+      v = mod2pi(phi - t);
+      return nonneg(v);
+    }
+    case kLSR: {
+      const double xi = x + sp, eta = y - 1.0 + -cp;
+      const double r2 = xi * xi + eta * eta;
+      if (r2 < 4.0 - kTol) return false;
+      u = std::sqrt(std::max(0.0, r2 - 4.0));
+      t = mod2pi(std::atan2(eta, xi) + std::atan2(2.0, u));
+      if (!nonneg(t)) return false;
+      v = mod2pi(t - phi);
+      return nonneg(v);
+    }
+    case kLRL: {
+      const double xi = x - sp, eta = y - 1.0 + cp;
+      const double r = std::hypot(xi, eta);
+      if (r > 4.0 + kTol) return false;
+      u = -2.0 * std::asin(std::min(1.0, 0.25 * r));
+      t = mod2pi(std::atan2(eta, xi) + 0.5 * u + kPi);
+      if (!nonneg(t)) return false;
+      v = mod2pi(phi - t + u);
+      return true;
+    }
+    case kLRLRa:
+    case kLRLRb: {
+      const double xi = x + sp, eta = y - 1.0 - cp;
+      const double r = std::hypot(xi, eta);
+      double w;  // the tauOmega "v" argument
+      if ((code & 7) == kLRLRa) {
+        const double rho = 0.25 * (2.0 + r);
+        if (rho > 1.0 + kTol) return false;
+        u = std::acos(std::min(1.0, rho));
+        w = -u;
+      } else {
+        const double rho = (20.0 - r * r) / 16.0;
+        if (rho < -kTol || rho > 1.0 + kTol) return false;
+        u = -std::acos(std::clamp(rho, 0.0, 1.0));
+        w = u;
+      }
+      const double delta = mod2pi(u - w);
+      const double a = std::sin(u) - std::sin(delta);
+      const double b = std::cos(u) - std::cos(delta) - 1.0;
+      const double t1 = std::atan2(eta * a - xi * b, xi * a + eta * b);
+      const double t2 = 2.0 * (std::cos(delta) - std::cos(w) - std::cos(u)) + 3.0;
+      t = mod2pi(t2 < 0.0 ? t1 + kPi : t1);
+      if (!nonneg(t)) return false;
+      v = mod2pi(t - u + w - phi);
+      return (code & 7) == kLRLRa ? nonpos(v) : nonneg(v);
+    }
+    case kLRSL: {
+      const double xi = x - sp, eta = y - 1.0 + cp;
+      const double rho = std::hypot(xi, eta);
+      if (rho * rho < 8.0 - kTol) return false;
+      const double r = std::sqrt(std::max(0.0, rho * rho - 4.0));
+      u = 2.0 - r;
+      if (!nonpos_len(u)) return false;
+      t = mod2pi(std::atan2(eta, xi) + std::atan2(r, -2.0));
+      if (!nonneg(t)) return false;
+      v = mod2pi(phi - kHalfPi - t);
+      return nonpos(v);
+    }
+    case kLRSR: {
+      const double xi = x + sp, eta = y - 1.0 - cp;
+      const double rho = std::hypot(xi, eta);
+      if (rho < 2.0 - kTol) return false;
+      t = std::atan2(xi, -eta);
+      if (!nonneg(t)) return false;
+      u = 2.0 - rho;
+      if (!nonpos_len(u)) return false;
+      v = mod2pi(t + kHalfPi - phi);
+      return nonpos(v);
+    }
+    default: {
+      const double xi = x + sp, eta = y - 1.0 - cp;
+      const double rho = std::hypot(xi, eta);
+      if (rho * rho < 20.0 - kTol) return false;
+      u = 4.0 - std::sqrt(std::max(0.0, rho * rho - 4.0));
+      if (!nonpos_len(u)) return false;
+      t = mod2pi(std::atan2((4.0 - u) * xi - 2.0 * eta, -2.0 * xi + (u - 4.0) * eta));
+      if (!nonneg(t)) return false;
+      v = mod2pi(t - phi);
+      return nonneg(v);
+    }
+  }
+}
+
+//! Shortest candidate of `word`: its length (unit radius) and parameters.
+Best eval_word(int word, const Local& q) {
+  Best best;
+  if (word < 0 || word >= kWordCount) return best;
+  for (const auto& [code, vsign] : table().sources[word]) {
+    double t, u, v;
+    if (!eval_candidate(code, q, t, u, v)) continue;
+    if (vsign != 0 && (vsign < 0) != (v < 0.0)) continue;
+    Raw r = raw_segments(code, t, u, v);
+    best.offer(snapped_length(r), code, t, u, v);
+  }
+  return best;
+}
+
+Path make_path(const Best& b, double radius) {
+  Raw r = raw_segments(b.code, b.t, b.u, b.v);
+  snapped_length(r);
+  Path p;
+  p.radius = radius;
+  p.segments.reserve(r.n);
+  for (int i = 0; i < r.n; ++i) {
+    if (r.value[i] == 0.0) continue;
+    p.segments.push_back({r.steer[i], r.value[i] < 0.0 ? -1 : 1, std::abs(r.value[i]) * radius});
+  }
+  return p;
+}
+
+double final_length(const Best& b) {
+  Raw r = raw_segments(b.code, b.t, b.u, b.v);
+  return snapped_length(r);
+}
+
+}  // namespace
+
+// ---- Path -------------------------------------------------------------------
+
+double Path::length() const {
+  double sum = 0.0;
+  for (const auto& s : segments) sum += s.length;
+  return sum;
+}
+
+std::string Path::word() const {
+  std::string w;
+  w.reserve(2 * segments.size());
+  for (const auto& s : segments) {
+    w += static_cast<char>(s.steer);
+    w += s.gear < 0 ? '-' : '+';
+  }
+  return w;
+}
+
+Pose2 advance(const Pose2& start, const Segment& segment, double radius) {
+  const double d = segment.gear < 0 ? -segment.length : segment.length;
+  const double c0 = std::cos(start.theta), s0 = std::sin(start.theta);
+  if (segment.steer == Steer::kStraight) return {start.x + d * c0, start.y + d * s0, start.theta};
+  // Turning by dth about the centre at radius r to the left (or right):
+  // chord = 2 r sin(dth/2) along heading theta + dth/2.
+  const double dth = (segment.steer == Steer::kLeft ? d : -d) / radius;
+  const double half = 0.5 * dth;
+  const double chord = segment.steer == Steer::kLeft ? 2.0 * radius * std::sin(half)
+                                                     : -2.0 * radius * std::sin(half);
+  const double ch = start.theta + half;
+  return {start.x + chord * std::cos(ch), start.y + chord * std::sin(ch),
+          geometry::wrap_angle(start.theta + dth)};
+}
+
+Pose2 pose_at(const Pose2& start, const Path& path, double s) {
+  Pose2 p = start;
+  double left = std::max(0.0, s);
+  for (const auto& seg : path.segments) {
+    if (left <= 0.0) break;
+    if (left >= seg.length) {
+      p = advance(p, seg, path.radius);
+      left -= seg.length;
+    } else {
+      p = advance(p, {seg.steer, seg.gear, left}, path.radius);
+      left = 0.0;
+    }
+  }
+  return p;
+}
+
+Pose2 end_pose(const Pose2& start, const Path& path) {
+  Pose2 p = start;
+  for (const auto& seg : path.segments) p = advance(p, seg, path.radius);
+  return p;
+}
+
+std::vector<Pose2> sample(const Pose2& start, const Path& path, double step) {
+  assert(step > 0.0);
+  const double total = path.length();
+  std::vector<Pose2> out;
+  if (!(step > 0.0) || total <= 0.0) {
+    out.push_back(total <= 0.0 ? start : end_pose(start, path));
+    if (total > 0.0) out.insert(out.begin(), start);
+    return out;
+  }
+  const auto n = static_cast<std::size_t>(std::ceil(total / step));
+  out.reserve(n + 1);
+  out.push_back(start);
+  // Walk segment by segment so each sample costs one advance().
+  Pose2 seg_start = start;
+  double seg_begin = 0.0;
+  std::size_t k = 1;
+  for (const auto& seg : path.segments) {
+    const double seg_end = seg_begin + seg.length;
+    for (; k < n; ++k) {
+      const double s = total * static_cast<double>(k) / static_cast<double>(n);
+      if (s > seg_end) break;
+      out.push_back(advance(seg_start, {seg.steer, seg.gear, s - seg_begin}, path.radius));
+    }
+    seg_start = advance(seg_start, seg, path.radius);
+    seg_begin = seg_end;
+  }
+  for (; k < n; ++k) out.push_back(seg_start);  // rounding at the very end
+  out.push_back(seg_start);
+  return out;
+}
+
+Path reversed(const Path& path) {
+  Path r;
+  r.radius = path.radius;
+  r.segments.assign(path.segments.rbegin(), path.segments.rend());
+  for (auto& s : r.segments) s.gear = -s.gear;
+  return r;
+}
+
+Path concatenate(const Path& first, const Path& second) {
+  assert(first.radius == second.radius || first.segments.empty() || second.segments.empty());
+  Path p;
+  p.radius = first.segments.empty() ? second.radius : first.radius;
+  p.segments = first.segments;
+  for (const auto& s : second.segments) {
+    if (!p.segments.empty() && p.segments.back().steer == s.steer &&
+        p.segments.back().gear == s.gear)
+      p.segments.back().length += s.length;
+    else
+      p.segments.push_back(s);
+  }
+  return p;
+}
+
+// ---- Shortest paths ---------------------------------------------------------
+
+Path shortest_path(const Pose2& from, const Pose2& to, double radius) {
+  return make_path(solve(to_local(from, to, radius)), radius);
+}
+
+double shortest_length(const Pose2& from, const Pose2& to, double radius) {
+  return final_length(solve(to_local(from, to, radius))) * radius;
+}
+
+ShortestWord shortest_word(const Pose2& from, const Pose2& to, double radius) {
+  const Best b = solve(to_local(from, to, radius));
+  return {final_length(b) * radius, word_of(b.code, b.v)};
+}
+
+std::string_view word_name(int id) {
+  assert(id >= 0 && id < kWordCount);
+  return table().names[id];
+}
+
+int word_id(std::string_view name) {
+  for (int w = 0; w < kWordCount; ++w)
+    if (table().names[w] == name) return w;
+  return -1;
+}
+
+double word_length(int word, const Pose2& from, const Pose2& to, double radius) {
+  return eval_word(word, to_local(from, to, radius)).len * radius;
+}
+
+std::optional<Path> word_path(int word, const Pose2& from, const Pose2& to, double radius) {
+  const Best b = eval_word(word, to_local(from, to, radius));
+  if (!(b.len < kInf)) return std::nullopt;
+  return make_path(b, radius);
+}
+
+}  // namespace hrs::rs

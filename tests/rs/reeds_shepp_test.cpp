@@ -1,0 +1,3 @@
+#include "rs/reeds_shepp.h"
+#include <gtest/gtest.h>
+TEST(Rs, Placeholder) { EXPECT_EQ(hrs::rs::kWordCount, 48); }
