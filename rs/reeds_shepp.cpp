@@ -260,12 +260,16 @@ struct Best {
 //! Evaluates the formulas for the query (X, Y, Φ) and its time-flip
 //! (-X, Y, -Φ); S, C are sin Φ and cos Φ. `flags` adds kReflect/kBackwards
 //! to the codes. `hb` = |Φ| is a lower bound on the total arc length.
-inline void solve_pair(double X, double Y, double phi, double S, double C, int flags, double hb,
-                       Best& best) {
+//! `omc` and `opc` are 1 - cos Φ and 1 + cos Φ without cancellation.
+inline void solve_pair(double X, double Y, double phi, double S, double omc, double opc, int flags,
+                       double hb, Best& best) {
   const bool backwards = flags & kBackwards;
-  const double ax = X - S, ay = Y - 1.0 + C;
-  const double bx = X + S, by = Y - 1.0 - C;
+  const double ax = X - S, ay = Y - omc;
+  const double bx = X + S, by = Y - opc;
   const double ra2 = ax * ax + ay * ay, rb2 = bx * bx + by * by;
+  // |B|² - 4 expanded (S² + opc² = 2 opc) so that it has no cancellation
+  // against 4 for nearby queries, where LSR's straight part is tiny.
+  const double rb2m4 = X * X + 2.0 * X * S + Y * Y - 2.0 * Y * opc - 2.0 * omc;
   const double ra = std::sqrt(ra2), rb = std::sqrt(rb2);
   double theta_a = 0.0, theta_b = 0.0;
   bool have_a = false, have_b = false;
@@ -292,8 +296,8 @@ inline void solve_pair(double X, double Y, double phi, double S, double C, int f
       }
     }
     // 8.2 L+S+R+: |B|² = u² + 4, t = θ_B + atan2(2, u), v = t - φ.
-    if (rb2 >= 4.0 - kTol) {
-      const double u = std::sqrt(std::max(0.0, rb2 - 4.0));
+    if (rb2m4 >= -kTol) {
+      const double u = std::sqrt(std::max(0.0, rb2m4));
       if (u + hb < best.len) {
         const double alpha = std::atan2(2.0, u);
         const double th[2] = {angle_b(), kPi - angle_b()};
@@ -347,7 +351,7 @@ inline void solve_pair(double X, double Y, double phi, double S, double C, int f
     }
     // 8.8 L+R-L-R+: ρ = (20 - |B|²)/16 = cos u, u in [-π/2, 0]; tauOmega with
     // v = u (δ = 0, so the flip term 5 - 4 cos u is always positive).
-    const double rho8 = (20.0 - rb2) / 16.0;
+    const double rho8 = (16.0 - rb2m4) / 16.0;
     if (rho8 >= -kTol && rho8 <= 1.0 + kTol &&
         std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho8)), hb) < best.len) {
       const double u = -std::acos(std::clamp(rho8, 0.0, 1.0));
@@ -399,8 +403,8 @@ inline void solve_pair(double X, double Y, double phi, double S, double C, int f
   }
   // 8.11 L+R-(π/2)S-L-(π/2)R+: |B|² = 4 + (4 - u)², t = θ_B + atan2(4 - u, -2),
   // v = t - φ. Needs u <= 0, i.e. |B|² >= 20.
-  if (!backwards && rb2 >= 20.0 - kTol) {
-    const double r = std::sqrt(rb2 - 4.0);
+  if (!backwards && rb2m4 >= 16.0 - kTol) {
+    const double r = std::sqrt(rb2m4);
     double u = 4.0 - r;
     if (nonpos_len(u) && -u + std::max(kPi, hb) < best.len) {
       const double alpha = std::atan2(r, -2.0);
@@ -418,15 +422,18 @@ inline void solve_pair(double X, double Y, double phi, double S, double C, int f
 
 Best solve(const Local& q) {
   const double s = std::sin(q.phi), c = std::cos(q.phi);
+  // 1 -/+ cos φ without cancellation: s² / (1 ± c) where 1 ± c is large.
+  const double omc = c > 0.0 ? s * s / (1.0 + c) : 1.0 - c;
+  const double opc = c < 0.0 ? s * s / (1.0 - c) : 1.0 + c;
   const double hb = std::abs(q.phi);
   Best best;
   // Forward words first (CSC usually wins far away), then the reflection,
   // then the backwards words seen from the goal.
-  solve_pair(q.x, q.y, q.phi, s, c, 0, hb, best);
-  solve_pair(q.x, -q.y, -q.phi, -s, c, kReflect, hb, best);
+  solve_pair(q.x, q.y, q.phi, s, omc, opc, 0, hb, best);
+  solve_pair(q.x, -q.y, -q.phi, -s, omc, opc, kReflect, hb, best);
   const double xb = q.x * c + q.y * s, yb = q.x * s - q.y * c;
-  solve_pair(xb, yb, q.phi, s, c, kBackwards, hb, best);
-  solve_pair(xb, -yb, -q.phi, -s, c, kBackwards | kReflect, hb, best);
+  solve_pair(xb, yb, q.phi, s, omc, opc, kBackwards, hb, best);
+  solve_pair(xb, -yb, -q.phi, -s, omc, opc, kBackwards | kReflect, hb, best);
   return best;
 }
 

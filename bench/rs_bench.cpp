@@ -1,0 +1,111 @@
+// Reeds–Shepp micro-benchmarks (paper §III-B, §V-A): our exact shortest
+// length and path against OMPL's ReedsSheppStateSpace::distance on the same
+// random pairs, the RS-decomposition look-up, and sampling a path.
+//
+// Pairs: 4096 random pairs, start and goal uniform in a box of half-size
+// 5 m (headings uniform), turning radius 0.7 m, fixed seed. "near" variants
+// use a 1 m box (most queries within 2 radii, where the CCC/CCCC families
+// compete and pruning helps least).
+
+#include <benchmark/benchmark.h>
+
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <ompl/base/spaces/ReedsSheppStateSpace.h>
+
+#include "rs/reeds_shepp.h"
+
+namespace {
+
+using hrs::rs::Pose2;
+namespace ob = ompl::base;
+
+constexpr double kRadius = 0.7;
+
+struct Pair {
+  Pose2 a, b;
+};
+
+std::vector<Pair> make_pairs(double half, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> pos(-half, half);
+  std::uniform_real_distribution<double> ang(-std::numbers::pi, std::numbers::pi);
+  std::vector<Pair> pairs(4096);
+  for (auto& p : pairs) {
+    p.a = {pos(rng), pos(rng), ang(rng)};
+    p.b = {pos(rng), pos(rng), ang(rng)};
+  }
+  return pairs;
+}
+
+const std::vector<Pair>& pairs_for(int which) {
+  static const std::vector<Pair> far = make_pairs(5.0, 42);
+  static const std::vector<Pair> near = make_pairs(1.0, 43);
+  return which == 0 ? far : near;
+}
+
+void BM_RsShortestLength(benchmark::State& state) {
+  const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ & 4095];
+    benchmark::DoNotOptimize(hrs::rs::shortest_length(p.a, p.b, kRadius));
+  }
+  state.SetLabel(state.range(0) == 0 ? "far" : "near");
+}
+BENCHMARK(BM_RsShortestLength)->Arg(0)->Arg(1);
+
+void BM_RsShortestPath(benchmark::State& state) {
+  const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ & 4095];
+    benchmark::DoNotOptimize(hrs::rs::shortest_path(p.a, p.b, kRadius));
+  }
+  state.SetLabel(state.range(0) == 0 ? "far" : "near");
+}
+BENCHMARK(BM_RsShortestPath)->Arg(0)->Arg(1);
+
+void BM_OmplDistance(benchmark::State& state) {
+  const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
+  ob::ReedsSheppStateSpace space(kRadius);
+  auto* a = space.allocState()->as<ob::SE2StateSpace::StateType>();
+  auto* b = space.allocState()->as<ob::SE2StateSpace::StateType>();
+  std::vector<std::pair<ob::State*, ob::State*>> states;
+  for (const Pair& p : pairs) {
+    auto* sa = space.allocState()->as<ob::SE2StateSpace::StateType>();
+    auto* sb = space.allocState()->as<ob::SE2StateSpace::StateType>();
+    sa->setXY(p.a.x, p.a.y), sa->setYaw(p.a.theta);
+    sb->setXY(p.b.x, p.b.y), sb->setYaw(p.b.theta);
+    states.emplace_back(sa, sb);
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto& s = states[i++ & 4095];
+    benchmark::DoNotOptimize(space.distance(s.first, s.second));
+  }
+  for (auto& s : states) space.freeState(s.first), space.freeState(s.second);
+  space.freeState(a), space.freeState(b);
+  state.SetLabel(state.range(0) == 0 ? "far" : "near");
+}
+BENCHMARK(BM_OmplDistance)->Arg(0)->Arg(1);
+
+void BM_RsSample(benchmark::State& state) {
+  const auto& pairs = pairs_for(0);
+  std::vector<hrs::rs::Path> paths;
+  for (int k = 0; k < 256; ++k)
+    paths.push_back(hrs::rs::shortest_path(pairs[k].a, pairs[k].b, kRadius));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ & 255;
+    benchmark::DoNotOptimize(hrs::rs::sample(pairs[k].a, paths[k], 0.05));
+  }
+  state.SetLabel("step 0.05 m, paths ~7 m");
+}
+BENCHMARK(BM_RsSample);
+
+}  // namespace
+
+BENCHMARK_MAIN();
