@@ -650,6 +650,20 @@ TEST(SceneFiles, DoorClearZoneIsFreeOfFurniture) {
   }
 }
 
+TEST(SceneFiles, DefaultStartFootprintLiesInTheDoorClearZone) {
+  // The zone is kept free of furniture, so the chair can always start there.
+  for (const auto& path : scene_files()) {
+    const Scene scene = load_scene(path.string());
+    Object chair;
+    chair.footprint = {{-0.5 * scene.wheelchair.length, -0.5 * scene.wheelchair.width},
+                       {0.5 * scene.wheelchair.length, -0.5 * scene.wheelchair.width},
+                       {0.5 * scene.wheelchair.length, 0.5 * scene.wheelchair.width},
+                       {-0.5 * scene.wheelchair.length, 0.5 * scene.wheelchair.width}};
+    chair.pose = door_start_pose(scene);
+    EXPECT_TRUE(polygon_inside(world_footprint(chair), door_clear_zone(scene))) << path;
+  }
+}
+
 TEST(SceneFiles, SmallBedroomHasWallsTwentyPercentShorter) {
   const Scene big = load_scene(HRSPACE_SOURCE_DIR "/scenes/bedroom.json");
   const Scene small = load_scene(HRSPACE_SOURCE_DIR "/scenes/small_bedroom.json");
