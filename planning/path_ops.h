@@ -19,6 +19,6 @@ void append_segment(std::vector<rs::Segment>& out, const rs::Segment& segment);
 //! The part of `path` between arc lengths `s0` and `s1` (clamped, s0 <= s1).
 rs::Path subpath(const rs::Path& path, double s0, double s1);
 //! Pose at the end of `path` driven from `start`.
-geometry::Pose2 end_pose(const geometry::Pose2& start, const rs::Path& path);
+geometry::Pose2 final_pose(const geometry::Pose2& start, const rs::Path& path);
 
 }  // namespace hrs::planning

@@ -39,14 +39,16 @@ using geometry::Pose2;
 
 //! Parameters of the baseline RRT (§III-B), with the paper's values.
 struct PlannerOptions {
-  double goal_bias = 0.8;        //!< probability of steering to the goal (paper: 80 %)
-  int k_nearest = 10;            //!< candidates by weighted distance before the RS pick (k)
-  int max_steps = 5;             //!< steps of the curve added towards a sample (n)
-  double step_length = 0.25;     //!< metres of curve per step and between tree nodes
-  double heading_weight = 0.7;   //!< metres per radian in the weighted distance
-  int max_iterations = 3000;     //!< cap: iterations before giving up (found = false)
-  int max_nodes = 20000;         //!< cap: tree size before giving up
-  double goal_tolerance = 1e-9;  //!< a node this close (metres + radians) is the goal
+  double goal_bias = 0.8;       //!< probability of steering to the goal (paper: 80 %)
+  int k_nearest = 10;           //!< candidates by weighted distance before the RS pick (k)
+  int max_steps = 5;            //!< steps of the curve added towards a sample (n)
+  double step_length = 0.25;    //!< metres of curve per step and between tree nodes
+  double heading_weight = 0.7;  //!< metres per radian in the weighted distance
+  int max_iterations = 3000;    //!< cap: iterations before giving up (found = false)
+  int max_nodes = 20000;        //!< cap: tree size before giving up
+  //! A path whose end misses the goal by more (metres + radians) is not
+  //! accepted: guards against an approximate steering function (§V-A).
+  double goal_tolerance = 1e-6;
 };
 
 //! Statistics of one leg query.
@@ -142,18 +144,18 @@ class LegPlanner {
 
  private:
   //! Drives the RS path from node `from_node` towards `target` for at most
-  //! `max_length` metres, adding a node every step along its free prefix.
-  //! Returns the last node added, or -1 when none was.
-  std::int32_t extend(RrtTree& tree, std::int32_t from_node, const Pose2& target,
-                      double max_length);
+  //! `max_length` metres, adding a node every step (<= step_length, equal
+  //! steps) along its free prefix. Returns the last node added (or -1) and sets
+  //! `reached` when the whole path to `target` was added.
+  std::int32_t extend(RrtTree& tree, std::int32_t from_node, const Pose2& target, double max_length,
+                      bool& reached);
 
   const CSpace* cspace_;
   PlannerOptions options_;
   double radius_;
   UniformSampler uniform_;
   ExactSteering exact_;
-  SampleSource* sampler_;
-  Steering* steering_;
+  PlannerHooks hooks_;  //!< resolved at each use, so the planner stays movable
   MotionValidator validator_;
   PoseNearest nearest_;
   std::vector<std::int32_t> knn_;

@@ -1,0 +1,150 @@
+#include "planning/goals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace hrs::planning {
+
+using geometry::Polygon;
+using geometry::Pose2;
+using geometry::Side;
+using geometry::Vec2;
+
+namespace {
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = geometry::dot(ab, ab);
+  double t = len2 > 0.0 ? geometry::dot(p - a, ab) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return geometry::norm(p - (a + t * ab));
+}
+
+bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = geometry::cross(b - a, c - a), d2 = geometry::cross(b - a, d - a);
+  const double d3 = geometry::cross(d - c, a - c), d4 = geometry::cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
+}
+
+bool inside(Vec2 p, const Polygon& poly) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 a = poly[i], b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+//! Distance between two simple polygons (0 when they overlap).
+double polygon_distance(const Polygon& a, const Polygon& b) {
+  if (inside(a.front(), b) || inside(b.front(), a)) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2 a0 = a[i], a1 = a[(i + 1) % a.size()];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Vec2 b0 = b[j], b1 = b[(j + 1) % b.size()];
+      if (segments_cross(a0, a1, b0, b1)) return 0.0;
+      best =
+          std::min({best, point_segment_distance(a0, b0, b1), point_segment_distance(b0, a0, a1)});
+    }
+  }
+  return best;
+}
+
+//! The chair's rectangle at `pose` (object-local coordinates).
+Polygon chair_polygon(const Pose2& pose, double length, double width) {
+  const double hl = 0.5 * length, hw = 0.5 * width;
+  const Vec2 local[4] = {{hl, hw}, {-hl, hw}, {-hl, -hw}, {hl, -hw}};
+  Polygon out;
+  for (Vec2 v : local) out.push_back(geometry::to_world(pose, v));
+  return out;
+}
+
+//! Chair pose at distance d along `normal` from `q`, facing the origin.
+Pose2 facing_origin(Vec2 q, Vec2 normal, double d) {
+  const Vec2 c = q + d * normal;
+  return {c.x, c.y, std::atan2(-c.y, -c.x)};
+}
+
+Side side_of_normal(Vec2 n) {
+  if (std::abs(n.x) >= std::abs(n.y)) return n.x > 0 ? Side::kFront : Side::kBack;
+  return n.y > 0 ? Side::kLeft : Side::kRight;
+}
+
+}  // namespace
+
+Side side_of(const geometry::Object& object, const Pose2& object_pose, Vec2 point) {
+  double hx = 0.0, hy = 0.0;
+  for (Vec2 v : object.footprint) {
+    hx = std::max(hx, std::abs(v.x));
+    hy = std::max(hy, std::abs(v.y));
+  }
+  const Vec2 local = geometry::rotate(point - object_pose.position(), -object_pose.theta);
+  return side_of_normal({hx > 0 ? local.x / hx : local.x, hy > 0 ? local.y / hy : local.y});
+}
+
+std::vector<GoalPose> goal_poses(const geometry::Scene& scene, const geometry::Object& object,
+                                 const Pose2& object_pose, const geometry::CSpace& cspace,
+                                 const GoalOptions& options) {
+  const Polygon& fp = object.footprint;
+  std::vector<GoalPose> out;
+  if (fp.size() < 3) return out;
+  const geometry::Approach approach = object.approach_or_default();
+  const double length = scene.wheelchair.length, width = scene.wheelchair.width;
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < fp.size(); ++i)
+    perimeter += geometry::norm(fp[(i + 1) % fp.size()] - fp[i]);
+  const int n =
+      std::max(1, static_cast<int>(std::ceil(options.density * perimeter / width - 1e-9)));
+  const double spacing = perimeter / n;
+
+  std::size_t edge = 0;
+  double edge_start = 0.0;
+  for (int slot = 0; slot < n; ++slot) {
+    const double s = (slot + 0.5) * spacing;
+    while (edge + 1 < fp.size() &&
+           edge_start + geometry::norm(fp[(edge + 1) % fp.size()] - fp[edge]) < s) {
+      edge_start += geometry::norm(fp[(edge + 1) % fp.size()] - fp[edge]);
+      ++edge;
+    }
+    const Vec2 a = fp[edge], b = fp[(edge + 1) % fp.size()];
+    const double len = geometry::norm(b - a);
+    if (len <= 0.0) continue;
+    const Vec2 dir = (1.0 / len) * (b - a);
+    const Vec2 normal{dir.y, -dir.x};  // outward for a counter-clockwise outline
+    const Side side = side_of_normal(normal);
+    if (!approach.sides[static_cast<int>(side)]) continue;
+    const Vec2 q = a + std::clamp(s - edge_start, 0.0, len) * dir;
+
+    // Smallest offset d whose chair (facing the centre) keeps `gap` from the
+    // footprint: scan outward, then bisect.
+    auto clear = [&](double d) {
+      return polygon_distance(chair_polygon(facing_origin(q, normal, d), length, width), fp) >=
+             approach.gap;
+    };
+    const double kScan = 0.02;
+    const double limit = length + width + approach.gap + 1.0;
+    double lo = 0.0, hi = -1.0;
+    for (double d = 0.0; d <= limit; d += kScan) {
+      if (clear(d)) {
+        hi = d;
+        break;
+      }
+      lo = d;
+    }
+    if (hi < 0.0) continue;
+    while (hi - lo > options.gap_tolerance) {
+      const double mid = 0.5 * (lo + hi);
+      (clear(mid) ? hi : lo) = mid;
+    }
+    const Pose2 local = facing_origin(q, normal, hi);
+    const Vec2 world = geometry::to_world(object_pose, local.position());
+    const Pose2 pose{world.x, world.y, geometry::wrap_angle(object_pose.theta + local.theta)};
+    if (!cspace.is_free(pose)) continue;
+    out.push_back({pose, side, slot});
+  }
+  return out;
+}
+
+}  // namespace hrs::planning

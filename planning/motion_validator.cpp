@@ -1,0 +1,53 @@
+#include "planning/motion_validator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "planning/path_ops.h"
+
+namespace hrs::planning {
+
+bool MotionValidator::pose_free(const Pose2& pose) {
+  ++checks_;
+  return cspace_->is_free(pose);
+}
+
+bool MotionValidator::segment_free(const Pose2& start, const rs::Segment& segment) {
+  ++checks_;
+  switch (segment.steer) {
+    case rs::Steer::kStraight:
+      return cspace_->straight_free(start, segment.gear * segment.length);
+    case rs::Steer::kLeft:
+      return cspace_->arc_free(start, radius_, segment.length / radius_, segment.gear);
+    case rs::Steer::kRight:
+      return cspace_->arc_free(start, radius_, -segment.length / radius_, segment.gear);
+  }
+  return false;
+}
+
+bool MotionValidator::path_free(const Pose2& start, const rs::Path& path) {
+  Pose2 p = start;
+  for (const rs::Segment& seg : path.segments) {
+    if (!segment_free(p, seg)) return false;
+    p = rs::advance(p, seg, radius_);
+  }
+  return true;
+}
+
+double MotionValidator::free_prefix(const Pose2& start, const rs::Path& path, double piece) {
+  double done = 0.0;
+  Pose2 p = start;
+  for (const rs::Segment& seg : path.segments) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / piece - 1e-9)));
+    const double len = seg.length / pieces;
+    for (int i = 0; i < pieces; ++i) {
+      const rs::Segment part{seg.steer, seg.gear, len};
+      if (!segment_free(p, part)) return done;
+      p = rs::advance(p, part, radius_);
+      done += len;
+    }
+  }
+  return done;
+}
+
+}  // namespace hrs::planning

@@ -1,0 +1,115 @@
+#include "planning/nearest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace hrs::planning {
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+//! Short-way angular gap between two wrapped angles.
+double angle_gap(double a, double b) { return std::abs(geometry::wrap_angle(a - b)); }
+}  // namespace
+
+double PoseNearest::distance(const geometry::Pose2& a, const geometry::Pose2& b) const {
+  return std::hypot(a.x - b.x, a.y - b.y) + weight_ * angle_gap(a.theta, b.theta);
+}
+
+double PoseNearest::point_distance(const double a[3], const double b[3]) const {
+  return std::hypot(a[0] - b[0], a[1] - b[1]) + weight_ * angle_gap(a[2], b[2]);
+}
+
+double PoseNearest::box_bound(const double q[3], const double lo[3], const double hi[3]) const {
+  const double dx = std::max({0.0, lo[0] - q[0], q[0] - hi[0]});
+  const double dy = std::max({0.0, lo[1] - q[1], q[1] - hi[1]});
+  double dt = 0.0;
+  if (q[2] < lo[2] || q[2] > hi[2]) dt = std::min(angle_gap(q[2], lo[2]), angle_gap(q[2], hi[2]));
+  return std::hypot(dx, dy) + weight_ * dt;
+}
+
+void PoseNearest::insert(const geometry::Pose2& pose, std::int32_t id) {
+  Node n;
+  n.p[0] = pose.x;
+  n.p[1] = pose.y;
+  n.p[2] = geometry::wrap_angle(pose.theta);
+  n.id = id;
+  const auto index = static_cast<std::int32_t>(nodes_.size());
+  nodes_.push_back(n);
+  if (index == 0) return;
+  std::int32_t cur = 0;
+  int depth = 0;
+  for (;;) {
+    Node& c = nodes_[cur];
+    const int axis = depth % 3;
+    const int side = n.p[axis] < c.p[axis] ? 0 : 1;
+    if (c.child[side] < 0) {
+      c.child[side] = index;
+      return;
+    }
+    cur = c.child[side];
+    ++depth;
+  }
+}
+
+void PoseNearest::search(std::int32_t node, int depth, const double q[3], double lo[3],
+                         double hi[3], std::size_t k, std::vector<Candidate>& heap) const {
+  const Node& n = nodes_[node];
+  const Candidate c{point_distance(q, n.p), static_cast<std::uint32_t>(node)};
+  if (heap.size() < k) {
+    heap.push_back(c);
+    std::push_heap(heap.begin(), heap.end());
+  } else if (c < heap.front()) {
+    std::pop_heap(heap.begin(), heap.end());
+    heap.back() = c;
+    std::push_heap(heap.begin(), heap.end());
+  }
+  const int axis = depth % 3;
+  const int first = q[axis] < n.p[axis] ? 0 : 1;
+  for (int pass = 0; pass < 2; ++pass) {
+    const int side = pass == 0 ? first : 1 - first;
+    const std::int32_t child = n.child[side];
+    if (child < 0) continue;
+    // The child's cell: this cell cut at the node's coordinate.
+    double* bound = side == 0 ? &hi[axis] : &lo[axis];
+    const double saved = *bound;
+    *bound = n.p[axis];
+    if (heap.size() < k || box_bound(q, lo, hi) <= heap.front().d) {
+      search(child, depth + 1, q, lo, hi, k, heap);
+    }
+    *bound = saved;
+  }
+}
+
+void PoseNearest::nearest(const geometry::Pose2& query, std::size_t k,
+                          std::vector<std::int32_t>& out) const {
+  out.clear();
+  if (nodes_.empty() || k == 0) return;
+  const double q[3] = {query.x, query.y, geometry::wrap_angle(query.theta)};
+  std::vector<Candidate> heap;
+  heap.reserve(k + 1);
+  if (nodes_.size() < kLinearScanBelow) {
+    for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      const Candidate c{point_distance(q, nodes_[i].p), static_cast<std::uint32_t>(i)};
+      if (heap.size() < k) {
+        heap.push_back(c);
+        std::push_heap(heap.begin(), heap.end());
+      } else if (c < heap.front()) {
+        std::pop_heap(heap.begin(), heap.end());
+        heap.back() = c;
+        std::push_heap(heap.begin(), heap.end());
+      }
+    }
+  } else {
+    double lo[3] = {-kInf, -kInf, -kPi};
+    double hi[3] = {kInf, kInf, kPi};
+    search(0, 0, q, lo, hi, k, heap);
+  }
+  std::sort_heap(heap.begin(), heap.end());
+  for (const Candidate& c : heap) out.push_back(nodes_[c.order].id);
+}
+
+}  // namespace hrs::planning

@@ -1,0 +1,37 @@
+#include "planning/path_ops.h"
+
+#include <algorithm>
+
+namespace hrs::planning {
+
+void append_segment(std::vector<rs::Segment>& out, const rs::Segment& segment) {
+  if (!(segment.length >= kMinSegmentLength)) return;
+  if (!out.empty() && out.back().steer == segment.steer && out.back().gear == segment.gear) {
+    out.back().length += segment.length;
+    return;
+  }
+  out.push_back(segment);
+}
+
+rs::Path subpath(const rs::Path& path, double s0, double s1) {
+  rs::Path out;
+  out.radius = path.radius;
+  double start = 0.0;
+  for (const rs::Segment& seg : path.segments) {
+    const double end = start + seg.length;
+    const double a = std::max(start, s0);
+    const double b = std::min(end, s1);
+    if (b > a) append_segment(out.segments, {seg.steer, seg.gear, b - a});
+    start = end;
+    if (start >= s1) break;
+  }
+  return out;
+}
+
+geometry::Pose2 final_pose(const geometry::Pose2& start, const rs::Path& path) {
+  geometry::Pose2 p = start;
+  for (const rs::Segment& seg : path.segments) p = rs::advance(p, seg, path.radius);
+  return p;
+}
+
+}  // namespace hrs::planning

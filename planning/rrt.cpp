@@ -1,0 +1,173 @@
+#include "planning/rrt.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "planning/path_ops.h"
+
+namespace hrs::planning {
+
+namespace {
+
+//! Uniform double in [0, 1) from the top 53 bits: identical on every
+//! standard library (std::uniform_real_distribution is not).
+double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+double pose_gap(const Pose2& a, const Pose2& b) {
+  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(geometry::wrap_angle(a.theta - b.theta));
+}
+
+}  // namespace
+
+rs::Path RrtTree::path_to(std::int32_t index, double radius) const {
+  std::vector<std::int32_t> chain;
+  for (std::int32_t i = index; i > 0; i = nodes[i].parent) chain.push_back(i);
+  rs::Path out;
+  out.radius = radius;
+  for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+    for (const rs::Segment& seg : nodes[*it].edge.segments) append_segment(out.segments, seg);
+  }
+  return out;
+}
+
+UniformSampler UniformSampler::for_room(const geometry::Scene& scene) {
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
+  double xmax = -xmin, ymax = -xmin;
+  for (const geometry::Vec2& v : scene.room.polygon) {
+    xmin = std::min(xmin, v.x);
+    ymin = std::min(ymin, v.y);
+    xmax = std::max(xmax, v.x);
+    ymax = std::max(ymax, v.y);
+  }
+  return UniformSampler(xmin, ymin, xmax, ymax);
+}
+
+Pose2 UniformSampler::sample(std::mt19937_64& rng) {
+  const double x = xmin_ + (xmax_ - xmin_) * unit(rng);
+  const double y = ymin_ + (ymax_ - ymin_) * unit(rng);
+  const double t = std::numbers::pi * (2.0 * unit(rng) - 1.0);
+  return {x, y, t};
+}
+
+double ExactSteering::distance(const Pose2& from, const Pose2& to, double radius) {
+  return rs::shortest_length(from, to, radius);
+}
+
+rs::Path ExactSteering::path(const Pose2& from, const Pose2& to, double radius) {
+  return rs::shortest_path(from, to, radius);
+}
+
+LegPlanner::LegPlanner(const geometry::Scene& scene, const CSpace& cspace, PlannerOptions options,
+                       PlannerHooks hooks)
+    : cspace_(&cspace),
+      options_(options),
+      radius_(scene.wheelchair.turning_radius),
+      uniform_(UniformSampler::for_room(scene)),
+      hooks_(hooks),
+      validator_(cspace, scene.wheelchair.turning_radius),
+      nearest_(options.heading_weight) {}
+
+LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed) {
+  RrtTree tree;
+  tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
+  return plan(from, to, seed, tree);
+}
+
+std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pose2& target,
+                                double max_length, bool& reached) {
+  reached = false;
+  Steering& steering = hooks_.steering ? *hooks_.steering : exact_;
+  const Pose2 start = tree.nodes[from_node].pose;
+  const rs::Path path = steering.path(start, target, radius_);
+  const double total = path.length();
+  if (!(total > kMinSegmentLength)) return -1;
+  const double limit = std::min(total, max_length);
+  const int steps = std::max(1, static_cast<int>(std::ceil(limit / options_.step_length - 1e-9)));
+  const double step = limit / steps;
+  std::int32_t last = -1;
+  std::int32_t parent = from_node;
+  Pose2 pose = start;
+  for (int i = 0; i < steps; ++i) {
+    const double s1 = (i + 1 == steps) ? limit : (i + 1) * step;
+    rs::Path piece = subpath(path, i * step, s1);
+    if (!validator_.path_free(pose, piece)) break;
+    pose = final_pose(pose, piece);
+    const double cost = tree.nodes[parent].cost + piece.length();
+    tree.nodes.push_back({pose, parent, std::move(piece), cost});
+    last = static_cast<std::int32_t>(tree.nodes.size() - 1);
+    nearest_.insert(pose, last);
+    parent = last;
+    if (i + 1 == steps && limit == total) reached = true;
+  }
+  return last;
+}
+
+LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LegResult result;
+  result.path.radius = radius_;
+  validator_.reset_checks();
+  std::mt19937_64 rng(seed);
+  SampleSource& sampler = hooks_.sampler ? *hooks_.sampler : uniform_;
+  Steering& steering = hooks_.steering ? *hooks_.steering : exact_;
+
+  if (tree.nodes.empty()) tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
+  nearest_.clear();
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    nearest_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
+  }
+
+  const bool ends_free = validator_.pose_free(from) && validator_.pose_free(to);
+  const double max_sample_length = options_.max_steps * options_.step_length;
+  // A goal attempt from an unchanged tree repeats the previous one exactly
+  // (same nearest node, same curve, same collision), so it is skipped; this
+  // changes the work, never the outcome.
+  std::size_t tree_size_at_goal_attempt = 0;
+  std::int32_t goal_node = -1;
+  if (ends_free && pose_gap(from, to) <= options_.goal_tolerance) goal_node = 0;
+  int it = 0;
+  while (ends_free && goal_node < 0 && it < options_.max_iterations &&
+         static_cast<int>(tree.nodes.size()) < options_.max_nodes) {
+    ++it;
+    const bool to_goal = unit(rng) < options_.goal_bias;
+    const Pose2 target = to_goal ? to : sampler.sample(rng);
+    if (to_goal && tree.nodes.size() == tree_size_at_goal_attempt) continue;
+    nearest_.nearest(target, static_cast<std::size_t>(std::max(1, options_.k_nearest)), knn_);
+    std::int32_t best = -1;
+    double best_length = std::numeric_limits<double>::infinity();
+    for (std::int32_t id : knn_) {
+      const double d = steering.distance(tree.nodes[id].pose, target, radius_);
+      if (d < best_length) {
+        best_length = d;
+        best = id;
+      }
+    }
+    if (best < 0) continue;
+    bool reached = false;
+    if (to_goal) {
+      const std::int32_t last =
+          extend(tree, best, to, std::numeric_limits<double>::infinity(), reached);
+      tree_size_at_goal_attempt = tree.nodes.size();
+      if (reached && pose_gap(tree.nodes[last].pose, to) <= options_.goal_tolerance) {
+        goal_node = last;
+        break;
+      }
+    } else {
+      extend(tree, best, target, max_sample_length, reached);
+    }
+  }
+
+  result.found = goal_node >= 0;
+  if (result.found) result.path = tree.path_to(goal_node, radius_);
+  result.stats.iterations = it;
+  result.stats.tree_nodes = static_cast<int>(tree.nodes.size());
+  result.stats.collision_checks = validator_.checks();
+  result.stats.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace hrs::planning

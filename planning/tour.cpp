@@ -1,0 +1,195 @@
+#include "planning/tour.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "geometry/error.h"
+#include "planning/path_ops.h"
+
+namespace hrs::planning {
+
+namespace {
+
+std::uint64_t splitmix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+double pose_gap(const Pose2& a, const Pose2& b) {
+  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(geometry::wrap_angle(a.theta - b.theta));
+}
+
+}  // namespace
+
+std::uint64_t leg_seed(std::uint64_t tour_seed, const LegKey& key) {
+  std::uint64_t h = splitmix(tour_seed);
+  for (int v : {key.from_object, key.to_object, key.from_slot, key.to_slot}) {
+    h = splitmix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+  }
+  return h;
+}
+
+//! One stop of the sequence: its object (−1: door) and its goal poses.
+struct TourPlanner::Stop {
+  std::string id;
+  int object = -1;
+  std::vector<GoalPose> goals;
+  std::vector<char> dead;  //!< goal pose whose continuation is known to fail
+};
+
+TourPlanner::TourPlanner(const geometry::Scene& scene, const CSpace& cspace, TourOptions options,
+                         std::uint64_t seed, TourHooks hooks)
+    : scene_(&scene),
+      cspace_(&cspace),
+      options_(options),
+      seed_(seed),
+      hooks_(hooks),
+      planner_(scene, cspace, options.planner, hooks.planner),
+      validator_(cspace, scene.wheelchair.turning_radius) {}
+
+std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {
+  if (id == kDoorId) {
+    const Pose2 start = geometry::door_start_pose(*scene_);
+    if (!cspace_->is_free(start)) return {};
+    return {GoalPose{start, geometry::Side::kFront, 0}};
+  }
+  const int index = scene_->find_object(id);
+  if (index < 0) throw InputError("unknown object id '" + std::string(id) + "' in sequence");
+  return goal_poses(*scene_, scene_->objects[index], cspace_->object_pose(index), *cspace_,
+                    options_.goals);
+}
+
+Tour TourPlanner::plan(const std::vector<std::string>& sequence) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Tour tour;
+  tour.sequence = sequence;
+  std::vector<Stop> stops;
+  stops.reserve(sequence.size());
+  for (const std::string& id : sequence) {
+    Stop stop;
+    stop.id = id;
+    stop.object = id == kDoorId ? -1 : scene_->find_object(id);
+    stop.goals = goals_for(id);
+    stop.dead.assign(stop.goals.size(), 0);
+    stops.push_back(std::move(stop));
+  }
+
+  std::vector<Leg> legs;
+  if (!stops.empty()) {
+    if (stops.size() == 1) {
+      tour.found = !stops[0].goals.empty();
+    } else {
+      for (std::size_t i = 0; i < stops[0].goals.size() && !tour.found; ++i) {
+        tour.found = search(stops, 0, static_cast<int>(i), legs, tour);
+        if (tour.stats.capped) break;
+      }
+    }
+  }
+
+  if (tour.found) {
+    std::vector<PathMetrics> parts;
+    for (Leg& leg : legs) {
+      leg.waypoints = waypoints_of(leg.from, leg.path, options_.waypoint_step);
+      leg.metrics = measure(*cspace_, leg.waypoints, leg.path.length());
+      parts.push_back(leg.metrics);
+    }
+    tour.metrics = combine(parts);
+    tour.legs = std::move(legs);
+  }
+  tour.stats.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return tour;
+}
+
+bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
+                         std::vector<Leg>& legs, Tour& tour) {
+  if (level + 1 == stops.size()) return true;
+  Stop& here = stops[level];
+  Stop& next = stops[level + 1];
+  if (here.dead[pose]) return false;
+  const Pose2 from = here.goals[pose].pose;
+  const double radius = planner_.radius();
+
+  // Candidate goal poses of the next stop, shortest RS length first.
+  std::vector<std::pair<double, int>> order;
+  order.reserve(next.goals.size());
+  for (std::size_t j = 0; j < next.goals.size(); ++j) {
+    order.emplace_back(rs::shortest_length(from, next.goals[j].pose, radius), static_cast<int>(j));
+  }
+  std::sort(order.begin(), order.end());
+  if (static_cast<int>(order.size()) > options_.max_candidates) {
+    order.resize(static_cast<std::size_t>(std::max(0, options_.max_candidates)));
+  }
+
+  for (const auto& [rs_length, j] : order) {
+    if (next.dead[j]) continue;  // reached before: its continuation failed
+    const Pose2 to = next.goals[j].pose;
+    LegKey key{here.object, next.object, here.goals[pose].slot, next.goals[j].slot};
+    std::optional<rs::Path> path;
+    LegSource source = LegSource::kPlanned;
+    LegStats stats;
+
+    if (hooks_.legs) {
+      rs::Path cached;
+      if (hooks_.legs->lookup(key, from, to, cached)) {
+        const bool valid =
+            std::abs(cached.radius - radius) <= 1e-12 &&
+            pose_gap(final_pose(from, cached), to) <= options_.planner.goal_tolerance &&
+            validator_.path_free(from, cached);
+        if (valid) {
+          path = std::move(cached);
+          source = LegSource::kReused;
+          ++tour.stats.legs_reused;
+        } else {
+          hooks_.legs->reject(key);
+          ++tour.stats.legs_rejected;
+        }
+      }
+    }
+    if (!path) {
+      if (tour.stats.legs_planned >= options_.max_leg_plans) {
+        tour.stats.capped = true;
+        return false;
+      }
+      ++tour.stats.legs_planned;
+      const std::uint64_t seed = leg_seed(seed_, key);
+      RrtTree* tree = hooks_.trees ? hooks_.trees->tree_for(key, from) : nullptr;
+      LegResult result =
+          tree ? planner_.plan(from, to, seed, *tree) : planner_.plan(from, to, seed);
+      stats = result.stats;
+      tour.stats.rrt_iterations += static_cast<std::uint64_t>(result.stats.iterations);
+      tour.stats.collision_checks += result.stats.collision_checks;
+      if (!result.found) {
+        ++tour.stats.legs_failed;
+        continue;
+      }
+      if (hooks_.legs) hooks_.legs->store(key, from, to, result.path);
+      path = std::move(result.path);
+    }
+
+    Leg leg;
+    leg.from_id = here.id;
+    leg.to_id = next.id;
+    leg.key = key;
+    leg.from = from;
+    leg.to = to;
+    leg.path = std::move(*path);
+    leg.source = source;
+    leg.stats = stats;
+    legs.push_back(std::move(leg));
+    tour.stats.depth = std::max(tour.stats.depth, static_cast<int>(legs.size()));
+    if (search(stops, level + 1, j, legs, tour)) return true;
+    legs.pop_back();
+    ++tour.stats.backtracks;
+    if (tour.stats.capped) return false;
+  }
+  here.dead[pose] = 1;
+  return false;
+}
+
+}  // namespace hrs::planning
