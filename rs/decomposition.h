@@ -1,0 +1,88 @@
+#pragma once
+// The RS-decomposition (paper §V-A): the configuration space around a start
+// pose, partitioned approximately by the word of the shortest Reeds–Shepp
+// path. Built by adaptive sampling: K uniform samples in an empty room twice
+// the room's size (start at its centre, heading +x), then more uniform
+// samples, each kept only when its nearest existing sample (kd-tree) has a
+// different shortest word, until `stop_after` consecutive samples agree.
+// A query is answered by the word of the nearest sample (the paper's mode:
+// one word evaluated instead of 48) or exactly (all words). The prediction
+// is an approximation: evaluate() measures how often it is right and what it
+// costs when it is not.
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "rs/kd_tree.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::rs {
+
+//! Parameters of the decomposition (defaults are the paper's).
+struct DecompositionOptions {
+  double radius = 1.0;                  //!< turning radius, metres
+  double room_width = 4.0;              //!< room extent along x, metres (sampled: 2x)
+  double room_depth = 4.0;              //!< room extent along y, metres (sampled: 2x)
+  int initial_samples = 1000;           //!< K, uniform samples before refinement
+  int stop_after = 100;                 //!< consecutive agreeing samples that end refinement
+  std::size_t max_samples = 1'000'000;  //!< safety cap on kept samples
+  //! Heading weight of the nearest-neighbour metric, metres per radian;
+  //! <= 0 means the turning radius (an arc of angle a has length r·a).
+  double heading_weight = 0.0;
+};
+
+//! One kept sample: a goal pose relative to the start and its shortest word.
+struct DecompositionSample {
+  Pose2 pose;    //!< in the start's frame (start at the origin, heading +x)
+  int word = 0;  //!< id of the shortest word, see word_name()
+};
+
+//! How well the prediction does on random queries.
+struct DecompositionAccuracy {
+  int queries = 0;
+  double word_accuracy = 0.0;         //!< fraction where the predicted word is a shortest one
+  double infeasible_fraction = 0.0;   //!< fraction where the predicted word cannot connect
+  double mean_excess = 0.0;           //!< metres, mean over feasible mispredictions
+  double mean_relative_excess = 0.0;  //!< mean (predicted - exact) / exact, same queries
+  int mispredicted_feasible = 0;      //!< queries counted in the means
+};
+
+class Decomposition {
+ public:
+  //! Builds the decomposition with randomness from `rng` (deterministic for a
+  //! given seed and options).
+  Decomposition(const DecompositionOptions& options, std::mt19937_64& rng);
+
+  //! Word predicted for the goal `to` seen from `from`.
+  int predict_word(const Pose2& from, const Pose2& to) const;
+  //! Paper mode: the path of the predicted word, or nullopt when that word
+  //! cannot connect the poses.
+  std::optional<Path> predicted_path(const Pose2& from, const Pose2& to) const;
+  //! Length of predicted_path(), +infinity when it does not exist (no allocation).
+  double predicted_length(const Pose2& from, const Pose2& to) const;
+  //! Exact mode: the shortest path over all 48 words.
+  Path exact_path(const Pose2& from, const Pose2& to) const;
+
+  //! Queries with start at the origin and goals uniform in the sampled box.
+  DecompositionAccuracy evaluate(int queries, std::mt19937_64& rng) const;
+
+  const DecompositionOptions& options() const { return options_; }
+  const std::vector<DecompositionSample>& samples() const { return samples_; }
+  //! Number of distinct words among the samples.
+  int region_count() const;
+  //! Uniform samples drawn while refining (kept or not).
+  std::size_t drawn() const { return drawn_; }
+
+ private:
+  Pose2 relative(const Pose2& from, const Pose2& to) const;
+  Pose2 uniform(std::mt19937_64& rng) const;
+
+  DecompositionOptions options_;
+  PoseKdTree tree_;
+  std::vector<DecompositionSample> samples_;
+  std::size_t drawn_ = 0;
+};
+
+}  // namespace hrs::rs
