@@ -12,5 +12,6 @@ using Argv = std::vector<std::string>;
 
 int cmd_validate(const Argv& args);  //!< experiments/cmd_geometry.cpp
 int cmd_collide(const Argv& args);   //!< experiments/cmd_geometry.cpp
+int cmd_rs(const Argv& args);        //!< experiments/cmd_rs.cpp
 
 }  // namespace hrs::cli

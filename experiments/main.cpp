@@ -21,6 +21,7 @@ struct Command {
 constexpr Command kCommands[] = {
     {"validate", "check a scene file and print its summary", hrs::cli::cmd_validate},
     {"collide", "collision and clearance of poses (CSV in, CSV out)", hrs::cli::cmd_collide},
+    {"rs", "shortest Reeds-Shepp paths for pose pairs (CSV in, CSV out)", hrs::cli::cmd_rs},
 };
 
 void usage(std::ostream& out) {

@@ -1,0 +1,71 @@
+// `hrspace rs`: shortest Reeds–Shepp paths for pose pairs (paper §III-B),
+// CSV in (x0,y0,t0,x1,y1,t1, header optional), CSV out (length,word,segments).
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "experiments/args.h"
+#include "experiments/commands.h"
+#include "geometry/error.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::cli {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: hrspace rs --radius R [--pairs FILE|-]\n"
+    "\n"
+    "Shortest Reeds-Shepp path (all 48 words, exact) for each pose pair.\n"
+    "\n"
+    "  --radius R     turning radius in metres (> 0), required\n"
+    "  --pairs FILE   CSV with columns x0,y0,t0,x1,y1,t1 (metres, radians);\n"
+    "                 a header row is optional; '-' (default) reads stdin\n"
+    "\n"
+    "Output (stdout): CSV with header length,word,segments, one row per pair in\n"
+    "input order. word is the steering letters each followed by its gear sign\n"
+    "(e.g. L+S+R-); segments are the signed lengths in metres (sign = gear),\n"
+    "space-separated, in the same order. Identical poses give length 0 and an\n"
+    "empty word.\n";
+
+std::string format_number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.12g", v);
+  return buf;
+}
+
+}  // namespace
+
+int cmd_rs(const Argv& argv) {
+  const Args args(argv, {"radius", "pairs"});
+  if (args.help()) {
+    std::cout << kUsage;
+    return 0;
+  }
+  args.expect_positional(0, "hrspace rs --radius R [--pairs FILE|-]");
+  if (!args.get("radius")) throw InputError("--radius is required (turning radius in metres)");
+  const double radius = args.number("radius", 0.0);
+  if (!(radius > 0.0)) throw InputError("--radius: must be > 0, got " + *args.get("radius"));
+  const std::string path = args.get_or("pairs", "-");
+  const auto rows = read_numeric_csv(read_input(path), 6, path == "-" ? "stdin" : path);
+
+  std::string out = "length,word,segments\n";
+  for (const auto& r : rows) {
+    const rs::Path p = rs::shortest_path({r[0], r[1], r[2]}, {r[3], r[4], r[5]}, radius);
+    out += format_number(p.length());
+    out += ',';
+    out += p.word();
+    out += ',';
+    for (std::size_t i = 0; i < p.segments.size(); ++i) {
+      if (i) out += ' ';
+      out += format_number(p.segments[i].gear * p.segments[i].length);
+    }
+    out += '\n';
+  }
+  std::cout << out;
+  return 0;
+}
+
+}  // namespace hrs::cli
