@@ -100,8 +100,8 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
     out.push_back(d);
   }
   if (out.size() != count)
-    throw InputError(what + ": expected " + std::to_string(count) + " comma-separated numbers, got '" +
-                     text + "'");
+    throw InputError(what + ": expected " + std::to_string(count) +
+                     " comma-separated numbers, got '" + text + "'");
   return out;
 }
 

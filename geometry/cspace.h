@@ -75,44 +75,59 @@ class CSpace {
   };
   //! One convex obstacle piece (furniture piece or wall piece) in the world.
   struct ConvexPiece {
-    std::vector<Vec2> local;  //!< vertices relative to the owner's position (rotated)
+    std::vector<Vec2> local;    //!< vertices relative to the owner's position (rotated)
     std::vector<Vec2> normals;  //!< outward edge normals of `local`
   };
   struct ObjectState {
     Pose2 pose;
-    Polygon footprint;                 //!< local frame (unrotated)
+    Polygon footprint;                  //!< local frame (unrotated)
     std::vector<Polygon> local_pieces;  //!< convex pieces of footprint, local frame
-    std::vector<ConvexPiece> pieces;   //!< rotated by pose.theta
-    std::vector<Vec2> world_boundary;  //!< world footprint for clearance
+    std::vector<ConvexPiece> pieces;    //!< rotated by pose.theta
+    std::vector<Vec2> world_boundary;   //!< world footprint for clearance
   };
   //! A C-obstacle piece in one slice: half-planes at the origin (base) and in
   //! the world, plus its bounding box.
   struct SlicePiece {
-    std::int32_t owner;  //!< object index, or -1 for walls
-    std::int32_t piece;  //!< index of the convex piece within its owner
+    std::int32_t owner;          //!< object index, or -1 for walls
+    std::int32_t piece;          //!< index of the convex piece within its owner
     std::uint32_t first, count;  //!< range in the slice's half-plane arrays
     Box base_box, box;
   };
   struct Slice {
-    std::vector<Vec2> swept;  //!< points whose hull covers the swept footprint
+    std::vector<Vec2> swept;          //!< points whose hull covers the swept footprint
     std::vector<Vec2> swept_normals;  //!< outward normals of the hull of `swept`
     std::vector<SlicePiece> pieces;
     std::vector<Halfplane> base, world;
   };
 
+  //! What a query sweeps, for the exact refinement of a slice-level hit.
+  struct Motion {
+    enum Kind { kPose, kStraight, kArc } kind;
+    Pose2 start;
+    double length;  //!< straight: signed length
+    Vec2 centre;    //!< arc: centre of rotation
+    double radius;  //!< arc: turning radius
+    double side;    //!< arc: +1 centre on the left, −1 on the right
+    double ha, hb;  //!< arc: heading range of this sub-arc
+  };
+
   int slice_of(double theta) const;
+  bool refine_hits(const SlicePiece& piece, const Motion& motion, int depth) const;
+  int arc_triangle(const Motion& m, double ha, double hb, Vec2 (&tri)[3], Vec2* axes) const;
   void build_slice_shapes(const Wheelchair& chair);
-  void build_walls(const Polygon& room);
+  void build_walls(const Polygon& room, double reach);
   void rebuild_object_pieces(int index);
   void place_object(int index);
   void fill_piece(const Slice& slice, const ConvexPiece& shape, SlicePiece& out,
                   std::vector<Halfplane>& base) const;
-  bool hits(const Slice& slice, const SlicePiece& piece, const Vec2* pts, int n,
-            const Vec2* axes, int naxes) const;
-  bool points_free(int slice, const Vec2* pts, int n, const Vec2* axes, int naxes) const;
+  bool hits(const Slice& slice, const SlicePiece& piece, const Vec2* pts, int n, const Vec2* axes,
+            int naxes) const;
+  bool points_free(int slice, const Vec2* pts, int n, const Vec2* axes, int naxes,
+                   const Motion& motion) const;
   const ConvexPiece& shape_of(const SlicePiece& piece) const;
 
   int slices_ = 72;
+  Vec2 corners_[4];  //!< chair footprint corners, chair frame
   Box room_box_{};
   Polygon room_;
   std::vector<ConvexPiece> walls_;

@@ -20,16 +20,16 @@ using Polygon = std::vector<Vec2>;  //!< vertices, counter-clockwise, not closed
 
 //! The room: the inner face of the walls, any simple polygon.
 struct Room {
-  Polygon polygon;                           //!< counter-clockwise
+  Polygon polygon;                            //!< counter-clockwise
   std::optional<std::array<double, 2>> size;  //!< set when the file used the `size` shorthand
   friend bool operator==(const Room&, const Room&) = default;
 };
 
 struct Door {
-  Vec2 center;                     //!< middle of the opening, on the room boundary
-  double width = 0.0;              //!< along the wall
-  double clear_depth = 1.2;        //!< depth of the zone kept free of furniture
-  std::optional<Pose2> start;      //!< explicit start pose of the wheelchair
+  Vec2 center;                 //!< middle of the opening, on the room boundary
+  double width = 0.0;          //!< along the wall
+  double clear_depth = 1.2;    //!< depth of the zone kept free of furniture
+  std::optional<Pose2> start;  //!< explicit start pose of the wheelchair
   friend bool operator==(const Door&, const Door&) = default;
 };
 
@@ -52,7 +52,7 @@ enum class Side { kFront = 0, kBack = 1, kLeft = 2, kRight = 3 };
 //! Where the wheelchair may stop to use an object.
 struct Approach {
   std::array<bool, 4> sides{true, true, true, true};  //!< indexed by Side
-  double gap = 0.1;                                    //!< chair-to-object distance
+  double gap = 0.1;                                   //!< chair-to-object distance
   friend bool operator==(const Approach&, const Approach&) = default;
 };
 
@@ -86,8 +86,8 @@ struct Activity {
 };
 
 struct Weights {
-  std::array<double, 3> path{1.0, 1.0, 1.0};   //!< length, rotation, clearance
-  std::array<double, 2> interior{1.0, 1.0};    //!< pairwise distance, pairwise rotation
+  std::array<double, 3> path{1.0, 1.0, 1.0};  //!< length, rotation, clearance
+  std::array<double, 2> interior{1.0, 1.0};   //!< pairwise distance, pairwise rotation
   friend bool operator==(const Weights&, const Weights&) = default;
 };
 

@@ -1,0 +1,60 @@
+#pragma once
+// Scenes for geometry tests: an L-shaped room with a non-convex (U-shaped)
+// object, corridors for clearance, and the scene files in scenes/.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geometry/scene.h"
+
+namespace hrs::testing {
+
+inline geometry::Scene l_shaped_scene() {
+  using geometry::Object;
+  geometry::Scene s;
+  s.name = "l_room";
+  s.room.polygon = {{0, 0}, {6, 0}, {6, 3}, {3, 3}, {3, 6}, {0, 6}};
+  s.door = {{1.5, 0}, 0.9, 1.2, std::nullopt};
+  s.wheelchair = {1.1, 0.65, 0.7};
+  Object u;
+  u.id = "u_desk";  // a U-shaped desk: non-convex
+  u.footprint = {{-0.6, -0.8}, {0.6, -0.8}, {0.6, 0.8},  {-0.6, 0.8},
+                 {-0.6, 0.4},  {0.2, 0.4},  {0.2, -0.4}, {-0.6, -0.4}};
+  u.pose = {4.3, 1.6, 0.7};
+  Object t;
+  t.id = "table";
+  t.size = std::array<double, 2>{0.8, 1.2};
+  t.footprint = {{-0.4, -0.6}, {0.4, -0.6}, {0.4, 0.6}, {-0.4, 0.6}};
+  t.pose = {1.2, 4.2, -0.3};
+  Object l;
+  l.id = "lamp";
+  l.size = std::array<double, 2>{0.4, 0.4};
+  l.footprint = {{-0.2, -0.2}, {0.2, -0.2}, {0.2, 0.2}, {-0.2, 0.2}};
+  l.pose = {0.4, 1.0, 0.0};
+  s.objects = {u, t, l};
+  return s;
+}
+
+//! A rectangular room with no furniture.
+inline geometry::Scene empty_room(double width, double depth) {
+  geometry::Scene s;
+  s.name = "empty";
+  s.room.polygon = {{0, 0}, {width, 0}, {width, depth}, {0, depth}};
+  s.door = {{width / 2, 0}, 0.9, 1.2, std::nullopt};
+  s.wheelchair = {1.1, 0.65, 0.7};
+  return s;
+}
+
+//! Paths of the scene files shipped in scenes/ (sorted).
+inline std::vector<std::string> scene_files() {
+  std::vector<std::string> out;
+  const std::filesystem::path dir = std::filesystem::path(HRSPACE_SOURCE_DIR) / "scenes";
+  if (std::filesystem::exists(dir))
+    for (const auto& e : std::filesystem::directory_iterator(dir))
+      if (e.path().extension() == ".json") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace hrs::testing
