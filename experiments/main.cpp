@@ -22,6 +22,7 @@ constexpr Command kCommands[] = {
     {"validate", "check a scene file and print its summary", hrs::cli::cmd_validate},
     {"collide", "collision and clearance of poses (CSV in, CSV out)", hrs::cli::cmd_collide},
     {"rs", "shortest Reeds-Shepp paths for pose pairs (CSV in, CSV out)", hrs::cli::cmd_rs},
+    {"design", "optimize a room layout (layout, tours, SVG, report)", hrs::cli::cmd_design},
 };
 
 void usage(std::ostream& out) {

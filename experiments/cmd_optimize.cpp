@@ -1,0 +1,142 @@
+// `hrspace design`: the layout optimizer of paper §III (optimize/design.h)
+// with its outputs (optimize/design_io.h), a progress bar on a terminal and
+// Ctrl-C writing the best design so far (exit 130).
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "experiments/args.h"
+#include "experiments/commands.h"
+#include "geometry/error.h"
+#include "geometry/scene.h"
+#include "optimize/design.h"
+#include "optimize/design_io.h"
+
+namespace hrs::cli {
+
+namespace {
+
+// Set by the SIGINT handler; a signal handler can only reach a static.
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void on_sigint(int) { g_interrupted.store(true); }
+
+constexpr const char* kDesignUsage =
+    "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
+    "                     [--planner baseline|proposed]\n\n"
+    "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
+    "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
+    "Writes DIR/layout.json (a scene file), DIR/tours.json, DIR/design.svg, DIR/report.json.\n"
+    "With --designs K > 1: seeds N..N+K-1 into DIR/1..DIR/K and DIR/contact_sheet.svg.\n\n"
+    "  --seed N        first seed (default 1)\n"
+    "  --iterations N  annealing iterations (default 700)\n"
+    "  --designs K     number of designs (default 1)\n"
+    "  --threads T     tour-planning threads (default: all cores); results do not depend on it\n"
+    "  --planner P     baseline (default); proposed is not available yet\n"
+    "Ctrl-C stops after the current iteration, writes the best design so far, exits 130.\n";
+
+std::string format_eta(double seconds) {
+  const long s = static_cast<long>(seconds + 0.5);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+  return buf;
+}
+
+}  // namespace
+
+int cmd_design(const Argv& argv) {
+  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner"});
+  if (args.help()) {
+    std::cout << "usage: " << kDesignUsage;
+    return 0;
+  }
+  args.expect_positional(1, "hrspace design SCENE --out DIR [options] (see --help)");
+  const auto out = args.get("out");
+  if (!out) throw InputError("--out DIR is required (see --help)");
+  const std::string planner = args.get_or("planner", "baseline");
+  if (planner == "proposed")
+    throw InputError(
+        "--planner proposed: the reuse planner (§V) is not available yet; use --planner baseline");
+  if (planner != "baseline")
+    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
+  const long seed = args.integer("seed", 1, 0, 1L << 53);
+  const long iterations = args.integer("iterations", 700, 0, 100000000);
+  const long designs = args.integer("designs", 1, 1, 1000);
+  const long threads = args.integer("threads", 0, 0, 1024);
+
+  const std::string path = args.positional()[0];
+  geometry::Scene scene =
+      path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
+
+  g_interrupted.store(false);
+  struct sigaction action {};
+  action.sa_handler = on_sigint;
+  sigemptyset(&action.sa_mask);
+  struct sigaction previous {};
+  sigaction(SIGINT, &action, &previous);
+
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  std::vector<std::string> svgs;
+  bool interrupted = false;
+  for (long d = 0; d < designs && !interrupted; ++d) {
+    optimize::DesignOptions options;
+    options.seed = static_cast<std::uint64_t>(seed + d);
+    options.iterations = static_cast<int>(iterations);
+    options.threads = static_cast<int>(threads);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto progress = [&](const optimize::DesignStep& step) {
+      if (!tty) return;
+      const int done = step.anneal.iteration + 1;
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double eta = done > 0 ? elapsed / done * (iterations - done) : 0.0;
+      constexpr int kWidth = 30;
+      const int filled = iterations > 0 ? static_cast<int>(kWidth * done / iterations) : kWidth;
+      std::string bar(filled, '#');
+      bar.resize(kWidth, '.');
+      char line[200];
+      std::snprintf(line, sizeof line, "\r%s[%s] %d/%ld  best %.3f  ETA %s ",
+                    designs > 1 ? ("design " + std::to_string(d + 1) + " ").c_str() : "",
+                    bar.c_str(), done, iterations, step.anneal.best_cost, format_eta(eta).c_str());
+      std::cerr << line << std::flush;
+    };
+    const optimize::DesignResult result =
+        optimize::design(scene, options, &g_interrupted, progress);
+    if (tty) std::cerr << "\r\033[K" << std::flush;
+    const std::filesystem::path dir = designs > 1
+                                          ? std::filesystem::path(*out) / std::to_string(d + 1)
+                                          : std::filesystem::path(*out);
+    optimize::RunInfo info{options.seed, planner, static_cast<int>(iterations)};
+    optimize::write_design(result, info, dir);
+    svgs.push_back(
+        optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
+    std::printf(
+        "%s: cost %.4f -> %.4f, tours found %d/%d, acceptance %.2f, %.1f s (planning %.0f%%)%s%s\n",
+        dir.string().c_str(), result.initial.total(), result.final.total(),
+        result.final.tours_found, result.final.tours_total,
+        result.proposals ? static_cast<double>(result.accepted) / result.proposals : 0.0,
+        result.time_total_s,
+        result.time_total_s > 0 ? 100.0 * result.time_planning_s / result.time_total_s : 0.0,
+        result.valid ? "" : "  WARNING: no valid layout found",
+        result.stopped ? "  (interrupted)" : "");
+    interrupted = result.stopped || g_interrupted.load();
+  }
+  if (designs > 1) {
+    std::ofstream sheet(std::filesystem::path(*out) / "contact_sheet.svg", std::ios::binary);
+    sheet << optimize::contact_sheet_svg(svgs);
+  }
+  std::fflush(stdout);
+  sigaction(SIGINT, &previous, nullptr);
+  return interrupted ? 130 : 0;
+}
+
+}  // namespace hrs::cli

@@ -1,0 +1,188 @@
+#include "optimize/costs.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+#include "geometry/error.h"
+
+namespace hrs::optimize {
+
+using geometry::Vec2;
+
+namespace {
+
+double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = geometry::dot(ab, ab);
+  double t = len2 > 0.0 ? geometry::dot(p - a, ab) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return geometry::norm(p - (a + t * ab));
+}
+
+bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = geometry::cross(b - a, c - a), d2 = geometry::cross(b - a, d - a);
+  const double d3 = geometry::cross(d - c, a - c), d4 = geometry::cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
+         d4 != 0;
+}
+
+double squared(double v) { return v * v; }
+
+}  // namespace
+
+CostModel::CostModel(const geometry::Scene& scene, std::vector<Sequence> sequences)
+    : scene_(scene), sequences_(std::move(sequences)) {
+  double total = 0.0;
+  for (const auto& s : sequences_) total += s.likelihood;
+  for (const auto& s : sequences_) seq_weight_.push_back(total > 0.0 ? s.likelihood / total : 0.0);
+
+  const auto alpha = object_scales(sequences_);
+  // ᾱ: the L̂-weighted mean of α over leg ends.
+  double mean = 0.0;
+  for (std::size_t k = 0; k < sequences_.size(); ++k) {
+    const auto& nodes = sequences_[k].nodes;
+    if (nodes.size() < 2) continue;
+    double sum = 0.0;
+    for (std::size_t i = 1; i < nodes.size(); ++i) sum += alpha.at(nodes[i]);
+    mean += seq_weight_[k] * sum / static_cast<double>(nodes.size() - 1);
+  }
+  for (const auto& [id, a] : alpha) alpha_hat_[id] = mean > 0.0 ? a / mean : 0.0;
+
+  const auto& room = scene_.room.polygon;
+  for (std::size_t i = 0; i < room.size(); ++i)
+    perimeter_ += geometry::norm(room[(i + 1) % room.size()] - room[i]);
+
+  for (std::size_t r = 0; r < scene_.relations.size(); ++r) {
+    const auto& rel = scene_.relations[r];
+    const int a = scene_.find_object(rel.a), b = scene_.find_object(rel.b);
+    if (a < 0 || b < 0)
+      throw InputError("relation names an unknown object: " + rel.a + ", " + rel.b);
+    relations_.push_back({a, b, static_cast<int>(r)});
+  }
+}
+
+double CostModel::object_weight(const std::string& id) const {
+  auto it = alpha_hat_.find(id);
+  return it == alpha_hat_.end() ? 0.0 : it->second;
+}
+
+double CostModel::wall_distance(const geometry::Polygon& footprint, int edge) const {
+  const auto& room = scene_.room.polygon;
+  const Vec2 a = room[edge], b = room[(edge + 1) % room.size()];
+  double d = std::numeric_limits<double>::infinity();
+  const std::size_t n = footprint.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 p = footprint[i], q = footprint[(i + 1) % n];
+    if (segments_cross(a, b, p, q)) return 0.0;
+    d = std::min(d, point_segment_distance(p, a, b));
+    d = std::min(d, point_segment_distance(a, p, q));
+    d = std::min(d, point_segment_distance(b, p, q));
+  }
+  return d;
+}
+
+double CostModel::wall_normal_angle(int edge) const {
+  const auto& room = scene_.room.polygon;
+  const Vec2 d = room[(edge + 1) % room.size()] - room[edge];
+  return std::atan2(d.x, -d.y);  // direction of (−d.y, d.x): left of a ccw edge
+}
+
+int CostModel::nearest_wall(int object, const Pose2& pose) const {
+  geometry::Object o = scene_.objects[object];
+  o.pose = pose;
+  const auto footprint = geometry::world_footprint(o);
+  const int edges = static_cast<int>(scene_.room.polygon.size());
+  std::vector<double> dist(edges);
+  double best = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < edges; ++e) best = std::min(best, dist[e] = wall_distance(footprint, e));
+  const double target = o.wall && o.wall->angle ? *o.wall->angle : 0.0;
+  int chosen = -1;
+  double chosen_err = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < edges; ++e) {
+    if (dist[e] > best + kWallTieTolerance) continue;
+    const double err = std::abs(geometry::wrap_angle(pose.theta - wall_normal_angle(e) - target));
+    if (err < chosen_err) chosen = e, chosen_err = err;
+  }
+  return chosen;
+}
+
+InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
+  assert(poses.size() == scene_.objects.size());
+  InteriorCosts c;
+  for (const auto& r : relations_) {
+    const auto& rel = scene_.relations[r.relation];
+    const Pose2 &a = poses[r.a], &b = poses[r.b];
+    if (rel.distance)
+      c.distance +=
+          rel.weight * squared(geometry::norm(a.position() - b.position()) - *rel.distance);
+    if (rel.angle)
+      c.rotation += rel.weight * squared(geometry::wrap_angle(a.theta - b.theta - *rel.angle));
+  }
+  for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
+    const auto& wall = scene_.objects[i].wall;
+    if (!wall || (!wall->distance && !wall->angle)) continue;
+    const int idx = static_cast<int>(i);
+    const int e = nearest_wall(idx, poses[i]);
+    if (wall->distance) {
+      geometry::Object o = scene_.objects[i];
+      o.pose = poses[i];
+      c.distance += squared(wall_distance(geometry::world_footprint(o), e) - *wall->distance);
+    }
+    if (wall->angle)
+      c.rotation +=
+          squared(geometry::wrap_angle(poses[i].theta - wall_normal_angle(e) - *wall->angle));
+  }
+  return c;
+}
+
+std::array<double, 3> CostModel::tour_costs(int k, const planning::Tour& tour) const {
+  const auto& nodes = sequences_[k].nodes;
+  std::array<double, 3> c{0.0, 0.0, 0.0};
+  const std::size_t legs = nodes.size() - 1;
+  if (!tour.found) {
+    // Legs the planner could join (stats.depth) are charged half their share.
+    const std::size_t joined = std::min<std::size_t>(std::max(tour.stats.depth, 0), legs);
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+      const double share = i <= joined ? 0.5 : 1.0;
+      c[0] += share * object_weight(nodes[i]) * unfound_length() / static_cast<double>(legs);
+    }
+    return c;
+  }
+  assert(tour.legs.size() == legs);
+  for (std::size_t i = 0; i < tour.legs.size(); ++i) {
+    const double w = object_weight(nodes[i + 1]);
+    const auto& m = tour.legs[i].metrics;
+    c[0] += w * m.length;
+    c[1] += w * m.rotation;
+    c[2] += w * m.clearance_deficit;
+  }
+  return c;
+}
+
+CostTerms CostModel::evaluate(const std::vector<Pose2>& poses,
+                              const std::vector<planning::Tour>& tours) const {
+  assert(tours.size() == sequences_.size());
+  CostTerms t;
+  const auto& wp = scene_.weights.path;
+  for (std::size_t k = 0; k < tours.size(); ++k) {
+    const auto c = tour_costs(static_cast<int>(k), tours[k]);
+    const double l = seq_weight_[k];
+    ++t.tours_total;
+    if (tours[k].found) {
+      ++t.tours_found;
+      t.path_length += wp[0] * l * c[0];
+      t.path_rotation += wp[1] * l * c[1];
+      t.path_clearance += wp[2] * l * c[2];
+    } else {
+      t.unfound_penalty += wp[0] * l * c[0];
+    }
+  }
+  const auto in = interior(poses);
+  t.interior_distance = scene_.weights.interior[0] * in.distance;
+  t.interior_rotation = scene_.weights.interior[1] * in.rotation;
+  return t;
+}
+
+}  // namespace hrs::optimize

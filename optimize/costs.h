@@ -1,0 +1,119 @@
+#pragma once
+// The cost of a layout (paper §III-D, DESIGN.md "Costs"):
+//   C_total = Σ_s L̂(s) · Σ_legs α̂_end · (w_l·length + w_r·rotation + w_c·clearance)
+//           + w_l · (penalty of unfound tours)
+//           + w_I,d · C_I^d + w_I,r · C_I^r.
+// Every term is reported separately (CostTerms).
+//
+// Decisions where the paper is ambiguous (documented in docs/optimize.md):
+// - Clearance is bounded and decreases as corridors widen: the per-leg mean
+//   over waypoints of max(0, w_ref − (left + right)), w_ref = planning::kReferenceWidth
+//   = 0.915 m (ADA), measured by planning::measure as clearance_deficit;
+//   the paper's mean width would reward narrow corridors under minimization.
+// - α_i (sequences.h) weights the legs that end at object i.
+// - Normalization: the paper's raw L(s) (≈ 0.01–0.1) and α_i make the path
+//   term vanish next to the interior term, so we use L̂(s) = L(s) / Σ_M L and
+//   α̂_i = α_i / ᾱ, ᾱ the L̂-weighted mean of α over leg ends. Then, with every
+//   leg of length ℓ, the length term is exactly w_l · legs · ℓ: the expected
+//   tour cost over the M sequences, with frequently visited objects weighted up.
+// - A tour that cannot be found costs as if its length were
+//   kUnfoundPerimeterFactor × the room's perimeter P, spread evenly over its
+//   legs and weighted by α̂ like a found tour; its rotation and clearance
+//   count 0. So that the annealer can tell "nearly tourable" from "blocked at
+//   the door", the first Tour::stats.depth legs (those the planner could join
+//   before failing) are charged half their share: an unfound tour costs
+//   between kUnfoundPerimeterFactor·P/2 and kUnfoundPerimeterFactor·P.
+// - Interior: pairwise distance (Σ relations weight·(|c_a − c_b| − d)² plus,
+//   per object with a wall distance preference, (footprint-to-nearest-wall
+//   distance − d)²) and pairwise rotation (Σ relations weight·wrap(θ_a − θ_b −
+//   θ_ab)² plus, per object with a wall angle preference, wrap(θ − normal −
+//   angle)²). Angles are wrapped to (−π, π]. The "nearest wall" is, among the
+//   room edges within kWallTieTolerance of the nearest one, the one whose
+//   angle preference fits best (an object in a corner touches two walls).
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "optimize/sequences.h"
+#include "planning/tour.h"
+
+namespace hrs::optimize {
+
+using geometry::Pose2;
+
+//! An unfound tour costs as if its length were this many room perimeters.
+inline constexpr double kUnfoundPerimeterFactor = 3.0;
+//! Walls this close (metres) to the nearest one also count as "nearest".
+inline constexpr double kWallTieTolerance = 0.01;
+
+//! Every term of C_total, already weighted (their sum is the total).
+struct CostTerms {
+  double path_length = 0.0;        //!< w_l · Σ L̂ Σ α̂ · length of found tours
+  double path_rotation = 0.0;      //!< w_r · Σ L̂ Σ α̂ · rotation
+  double path_clearance = 0.0;     //!< w_c · Σ L̂ Σ α̂ · clearance deficit
+  double unfound_penalty = 0.0;    //!< w_l · Σ L̂ · penalty of unfound tours
+  double interior_distance = 0.0;  //!< w_I,d · C_I^d
+  double interior_rotation = 0.0;  //!< w_I,r · C_I^r
+  int tours_found = 0;
+  int tours_total = 0;
+  double path() const { return path_length + path_rotation + path_clearance + unfound_penalty; }
+  double interior() const { return interior_distance + interior_rotation; }
+  double total() const { return path() + interior(); }
+};
+
+//! Unweighted interior costs.
+struct InteriorCosts {
+  double distance = 0.0;  //!< C_I^d, m²
+  double rotation = 0.0;  //!< C_I^r, rad²
+};
+
+//! The cost model of one scene and its M sequences.
+class CostModel {
+ public:
+  CostModel(const geometry::Scene& scene, std::vector<Sequence> sequences);
+
+  const std::vector<Sequence>& sequences() const { return sequences_; }
+  //! L̂(s) of sequence k (sums to 1 over the sequences).
+  double sequence_weight(int k) const { return seq_weight_[k]; }
+  //! α̂ of an object id (0 for ids not in any sequence).
+  double object_weight(const std::string& id) const;
+  //! Room perimeter, metres.
+  double perimeter() const { return perimeter_; }
+  //! Length an unfound tour is charged as (metres).
+  double unfound_length() const { return kUnfoundPerimeterFactor * perimeter_; }
+
+  //! Unweighted interior costs of object poses (scene order).
+  InteriorCosts interior(const std::vector<Pose2>& poses) const;
+  //! α̂-weighted [length, rotation, clearance deficit] of one tour of
+  //! sequence k (unweighted by L̂ and w); unfound: [penalty, 0, 0] with the
+  //! penalty graded by stats.depth (see the header).
+  std::array<double, 3> tour_costs(int k, const planning::Tour& tour) const;
+  //! All terms for poses and the M tours (tours[k] tours sequences()[k]).
+  CostTerms evaluate(const std::vector<Pose2>& poses,
+                     const std::vector<planning::Tour>& tours) const;
+
+  //! Distance from the footprint to the room edge `edge` (vertices edge, edge+1).
+  double wall_distance(const geometry::Polygon& footprint, int edge) const;
+  //! The wall an object at `pose` counts as nearest (see the header).
+  int nearest_wall(int object, const Pose2& pose) const;
+  //! Angle of the inward normal of room edge `edge`.
+  double wall_normal_angle(int edge) const;
+
+ private:
+  geometry::Scene scene_;
+  std::vector<Sequence> sequences_;
+  std::vector<double> seq_weight_;
+  std::map<std::string, double> alpha_hat_;
+  double perimeter_ = 0.0;
+  struct RelationIndex {
+    int a, b;
+    int relation;  // index into scene_.relations
+  };
+  std::vector<RelationIndex> relations_;
+};
+
+}  // namespace hrs::optimize

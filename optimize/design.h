@@ -1,0 +1,83 @@
+#pragma once
+// The design runner behind `hrspace design` (paper §III, Fig. 2): simulated
+// annealing over the furniture poses (§III-E) where every evaluated layout is
+// toured by the wheelchair along the M most likely sequences (§III-A) and
+// scored by the costs of §III-D.
+//
+// Per iteration: the annealer proposes a move of one movable object; a move
+// that leaves the room, overlaps another object or enters the door's clear
+// zone is rejected by exact predicates (geometry/polygon_ops.h) before any
+// planning; otherwise the C-space is updated incrementally
+// (CSpace::move_object), the M tours are planned in parallel (one
+// TourPlanner per sequence, seeded from (seed, iteration, tour index), so the
+// result is the same for any number of threads), the cost is computed and the
+// Metropolis rule decides; a rejected move is undone in the C-space.
+//
+// The initial temperature is a fraction of the initial cost (cost units are
+// metres, radians and m², so a fixed temperature would not fit every scene).
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "geometry/cspace.h"
+#include "geometry/scene.h"
+#include "optimize/annealer.h"
+#include "optimize/costs.h"
+#include "optimize/sequences.h"
+#include "planning/tour.h"
+
+namespace hrs::optimize {
+
+struct DesignOptions {
+  std::uint64_t seed = 1;
+  int iterations = 700;           //!< annealing iterations (paper: 700)
+  int threads = 0;                //!< tour-planning threads, caller included (0: all cores)
+  double t_start_fraction = 0.1;  //!< t_start = this × initial total cost
+  double t_end_ratio = 1e-3;      //!< t_end = this × t_start
+  AnnealOptions anneal;           //!< moves; its temperatures and iterations are set from above
+  planning::TourOptions tour;     //!< the tour planner (baseline)
+  geometry::CSpaceOptions cspace;
+};
+
+//! One iteration of a design run (report.json "trace").
+struct DesignStep {
+  TraceEntry anneal;
+  CostTerms proposed;        //!< terms of the proposed layout (zeros when invalid)
+  double planning_ms = 0.0;  //!< wall time of planning the M tours
+};
+
+struct DesignResult {
+  geometry::Scene layout;             //!< the input scene with the best poses
+  std::vector<Sequence> sequences;    //!< the M sequences, most likely first
+  std::vector<planning::Tour> tours;  //!< tours of the best layout (tours[k] ↔ sequences[k])
+  CostTerms initial;                  //!< of the input layout
+  CostTerms final;                    //!< of the best layout
+  bool valid = false;                 //!< the best layout passed every exact check
+  int proposals = 0, valid_proposals = 0, accepted = 0;
+  bool stopped = false;  //!< interrupted through the stop flag
+  double time_total_s = 0.0;
+  double time_planning_s = 0.0;  //!< wall time spent planning tours
+  double t_start = 0.0, t_end = 0.0;
+  int threads = 1;
+  std::vector<DesignStep> trace;
+};
+
+//! Why a layout is not valid, or "" when it is: every object inside the room,
+//! no two objects overlapping, the door's clear zone free (exact predicates).
+std::string layout_violation(const geometry::Scene& scene);
+//! The same for object `index` only, against the room, door zone and others.
+std::string object_violation(const geometry::Scene& scene, int index);
+
+//! Runs one design. `stop` (may be null) ends the run after the current
+//! iteration; `progress` (may be null) is called after every iteration.
+DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
+                    const std::atomic<bool>* stop = nullptr,
+                    const std::function<void(const DesignStep&)>& progress = {});
+
+//! Seed of tour k at iteration `iteration` (0: the initial layout).
+std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour);
+
+}  // namespace hrs::optimize

@@ -1,0 +1,279 @@
+#include "optimize/design_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "geometry/error.h"
+#include "planning/tour_json.h"
+
+namespace hrs::optimize {
+
+namespace {
+
+using geometry::Vec2;
+using nlohmann::json;
+
+json terms_json(const CostTerms& t) {
+  return {{"path_length", t.path_length},
+          {"path_rotation", t.path_rotation},
+          {"path_clearance", t.path_clearance},
+          {"unfound_penalty", t.unfound_penalty},
+          {"interior_distance", t.interior_distance},
+          {"interior_rotation", t.interior_rotation},
+          {"path", t.path()},
+          {"interior", t.interior()},
+          {"total", t.total()},
+          {"tours_found", t.tours_found},
+          {"tours_total", t.tours_total}};
+}
+
+json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f", v);
+  return buf;
+}
+
+//! Maps scene metres to SVG pixels (y up → y down).
+struct Frame {
+  double xmin, ymax, scale, left, top;
+  double x(double wx) const { return left + (wx - xmin) * scale; }
+  double y(double wy) const { return top + (ymax - wy) * scale; }
+  std::string pt(Vec2 p) const { return num(x(p.x)) + "," + num(y(p.y)); }
+  std::string points(const geometry::Polygon& poly) const {
+    std::string s;
+    for (const auto& p : poly) {
+      if (!s.empty()) s += ' ';
+      s += pt(p);
+    }
+    return s;
+  }
+};
+
+void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw InputError(path.string() + ": cannot write file");
+}
+
+}  // namespace
+
+std::string tours_document(const DesignResult& result) {
+  json tours = json::array();
+  for (std::size_t k = 0; k < result.tours.size(); ++k) {
+    json t = json::parse(planning::tour_json(result.tours[k], result.sequences[k].likelihood));
+    if (t.contains("stats")) t["stats"].erase("time_ms");  // timings are not reproducible
+    tours.push_back(std::move(t));
+  }
+  return json{{"tours", tours}}.dump(1) + "\n";
+}
+
+std::string report_document(const DesignResult& result, const RunInfo& info) {
+  json terms = json::object();
+  const json initial = terms_json(result.initial), final = terms_json(result.final);
+  for (const auto& [name, value] : initial.items())
+    terms[name] = {{"initial", value}, {"final", final[name]}};
+  json trace = json::array();
+  for (const auto& s : result.trace) {
+    const auto& e = s.anneal;
+    json step = {
+        {"iteration", e.iteration + 1},
+        {"temperature", e.temperature},
+        {"object", e.object >= 0 ? json(result.layout.objects[e.object].id) : json(nullptr)},
+        {"move", e.rotation ? "rotate" : "translate"},
+        {"valid", e.valid},
+        {"accepted", e.accepted},
+        {"proposed", finite_or_null(e.proposed_cost)},
+        {"current", e.current_cost},
+        {"best", finite_or_null(e.best_cost)}};
+    if (e.valid) {
+      step["tours_found"] = s.proposed.tours_found;
+      step["planning_ms"] = s.planning_ms;
+    }
+    trace.push_back(std::move(step));
+  }
+  json seqs = json::array();
+  for (const auto& s : result.sequences)
+    seqs.push_back({{"sequence", s.nodes}, {"likelihood", s.likelihood}});
+  json r = {
+      {"scene", result.layout.name},
+      {"seed", info.seed},
+      {"planner", info.planner},
+      {"iterations", info.iterations},
+      {"iterations_run", result.proposals},
+      {"stopped", result.stopped},
+      {"valid", result.valid},
+      {"threads", result.threads},
+      {"cost",
+       {{"initial", result.initial.total()}, {"final", result.final.total()}, {"terms", terms}}},
+      {"time_s",
+       {{"total", result.time_total_s},
+        {"planning", result.time_planning_s},
+        {"planning_share",
+         result.time_total_s > 0 ? result.time_planning_s / result.time_total_s : 0.0}}},
+      {"acceptance_rate",
+       result.proposals > 0 ? static_cast<double>(result.accepted) / result.proposals : 0.0},
+      {"accepted", result.accepted},
+      {"valid_proposals", result.valid_proposals},
+      {"temperature", {{"start", result.t_start}, {"end", result.t_end}}},
+      {"sequences", seqs},
+      {"trace", trace}};
+  return r.dump(1) + "\n";
+}
+
+std::string design_svg(const DesignResult& result, const std::string& title) {
+  const auto& scene = result.layout;
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
+  for (const auto& p : scene.room.polygon) {
+    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
+    ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
+  }
+  const double scale = 100.0;  // pixels per metre
+  const Frame f{xmin, ymax, scale, 20.0, 40.0};
+  const double width = (xmax - xmin) * scale + 40.0, height = (ymax - ymin) * scale + 90.0;
+  std::ostringstream s;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\""
+    << num(height) << "\" viewBox=\"0 0 " << num(width) << " " << num(height)
+    << "\" font-family=\"sans-serif\">\n";
+  s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  s << "<text x=\"20\" y=\"25\" font-size=\"15\">" << escape(title) << "</text>\n";
+  s << "<polygon points=\"" << f.points(scene.room.polygon)
+    << "\" fill=\"#f7f7f2\" stroke=\"#222\" stroke-width=\"4\"/>\n";
+  // Door: its clear zone, then the opening drawn over the wall.
+  s << "<polygon points=\"" << f.points(geometry::door_clear_zone(scene))
+    << "\" fill=\"#ffe9c7\" stroke=\"#e0a040\" stroke-dasharray=\"5,4\"/>\n";
+  const Vec2 n = geometry::door_inward_normal(scene);
+  const Vec2 along{n.y, -n.x};
+  const Vec2 c = scene.door.center;
+  s << "<line x1=\"" << num(f.x((c - 0.5 * scene.door.width * along).x)) << "\" y1=\""
+    << num(f.y((c - 0.5 * scene.door.width * along).y)) << "\" x2=\""
+    << num(f.x((c + 0.5 * scene.door.width * along).x)) << "\" y2=\""
+    << num(f.y((c + 0.5 * scene.door.width * along).y))
+    << "\" stroke=\"#f7f7f2\" stroke-width=\"6\"/>\n";
+  s << "<text x=\"" << num(f.x(c.x + 0.25 * n.x)) << "\" y=\"" << num(f.y(c.y + 0.25 * n.y))
+    << "\" font-size=\"11\" fill=\"#a06010\" text-anchor=\"middle\">door</text>\n";
+  // Objects with a mark on their front (local +x).
+  for (const auto& o : scene.objects) {
+    s << "<polygon points=\"" << f.points(geometry::world_footprint(o)) << "\" fill=\""
+      << (o.fixed ? "#d8d8d8" : "#cfe0f5") << "\" stroke=\"#345\" stroke-width=\"1.5\"/>\n";
+    double front = 0.0;
+    for (const auto& p : o.footprint) front = std::max(front, p.x);
+    const Vec2 a = geometry::to_world(o.pose, {front, -0.12}),
+               b = geometry::to_world(o.pose, {front, 0.12});
+    s << "<line x1=\"" << num(f.x(a.x)) << "\" y1=\"" << num(f.y(a.y)) << "\" x2=\""
+      << num(f.x(b.x)) << "\" y2=\"" << num(f.y(b.y))
+      << "\" stroke=\"#c02020\" stroke-width=\"5\"/>\n";
+    s << "<text x=\"" << num(f.x(o.pose.x)) << "\" y=\"" << num(f.y(o.pose.y) + 4)
+      << "\" font-size=\"12\" text-anchor=\"middle\">" << escape(o.id) << "</text>\n";
+  }
+  // Tours: the others faintly first, then the most likely one boldly.
+  for (std::size_t pass = 0; pass < 2; ++pass) {
+    for (std::size_t k = 0; k < result.tours.size(); ++k) {
+      const bool bold = k == 0;
+      if (bold != (pass == 1)) continue;
+      for (const auto& leg : result.tours[k].legs) {
+        s << "<polyline fill=\"none\" points=\"";
+        bool first = true;
+        for (const auto& w : leg.waypoints) {
+          s << (first ? "" : " ") << f.pt(w.position());
+          first = false;
+        }
+        s << "\" stroke=\"" << (bold ? "#d62728" : "#5070a0") << "\" stroke-width=\""
+          << (bold ? "3" : "1") << "\" stroke-opacity=\"" << (bold ? "0.95" : "0.35") << "\"/>\n";
+      }
+    }
+  }
+  // The chair at its start pose.
+  {
+    const auto start = geometry::door_start_pose(scene);
+    const double l = scene.wheelchair.length / 2, w = scene.wheelchair.width / 2;
+    const geometry::Polygon chair{
+        geometry::to_world(start, {-l, -w}), geometry::to_world(start, {l, -w}),
+        geometry::to_world(start, {l, w}), geometry::to_world(start, {-l, w})};
+    s << "<polygon points=\"" << f.points(chair)
+      << "\" fill=\"none\" stroke=\"#2a7\" stroke-width=\"1.5\" stroke-dasharray=\"3,2\"/>\n";
+  }
+  // Scale bar: 1 m.
+  const double by = height - 25.0;
+  s << "<line x1=\"20\" y1=\"" << num(by) << "\" x2=\"" << num(20 + scale) << "\" y2=\"" << num(by)
+    << "\" stroke=\"black\" stroke-width=\"3\"/>\n";
+  s << "<text x=\"" << num(20 + scale + 8) << "\" y=\"" << num(by + 4)
+    << "\" font-size=\"12\">1 m</text>\n";
+  const int found = result.final.tours_found, total = result.final.tours_total;
+  s << "<text x=\"" << num(20 + scale + 50) << "\" y=\"" << num(by + 4) << "\" font-size=\"12\">"
+    << "cost " << num(result.final.total()) << ", tours found " << found << "/" << total
+    << " (bold: most likely)</text>\n";
+  s << "</svg>\n";
+  return s.str();
+}
+
+std::string contact_sheet_svg(const std::vector<std::string>& svgs, int columns) {
+  auto attr = [](const std::string& svg, const std::string& name) {
+    const auto p = svg.find(name + "=\"");
+    if (p == std::string::npos) return 0.0;
+    return std::stod(svg.substr(p + name.size() + 2));
+  };
+  double cell_w = 0.0, cell_h = 0.0;
+  for (const auto& s : svgs)
+    cell_w = std::max(cell_w, attr(s, "width")), cell_h = std::max(cell_h, attr(s, "height"));
+  columns = std::max(1, std::min(columns, static_cast<int>(svgs.size())));
+  const int rows = (static_cast<int>(svgs.size()) + columns - 1) / columns;
+  std::ostringstream out;
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(columns * cell_w)
+      << "\" height=\"" << num(rows * cell_h) << "\">\n";
+  for (std::size_t i = 0; i < svgs.size(); ++i) {
+    std::string s = svgs[i];
+    const auto pos = s.find("<svg ");
+    if (pos == std::string::npos) continue;
+    s.replace(pos, 5,
+              "<svg x=\"" + num((i % columns) * cell_w) + "\" y=\"" +
+                  num(static_cast<double>(i / columns) * cell_h) + "\" ");
+    out << s;
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+void write_design(const DesignResult& result, const RunInfo& info,
+                  const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create directory: " + ec.message());
+  write_file(dir / "layout.json", geometry::write_scene(result.layout));
+  write_file(dir / "tours.json", tours_document(result));
+  const std::string title = result.layout.name + " — seed " + std::to_string(info.seed) +
+                            (result.valid ? "" : " (NOT VALID)");
+  write_file(dir / "design.svg", design_svg(result, title));
+  write_file(dir / "report.json", report_document(result, info));
+}
+
+}  // namespace hrs::optimize

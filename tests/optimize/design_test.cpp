@@ -1,0 +1,226 @@
+// Design outputs checked independently of the annealer: the written layout
+// is a valid scene with every object inside the room, no overlaps, the door
+// zone free, fixed objects and all sizes unchanged, and every tour of
+// tours.json re-validated against the final layout. Determinism: the same
+// seed gives byte-identical layout.json and tours.json with 1 and 2 threads.
+#include "optimize/design.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "geometry/cspace.h"
+#include "geometry/polygon_ops.h"
+#include "optimize/design_io.h"
+#include "planning/motion_validator.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::optimize {
+namespace {
+
+using geometry::Polygon;
+using geometry::Scene;
+using geometry::Vec2;
+using nlohmann::json;
+
+const std::string kBedroom = std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json";
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = geometry::dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(geometry::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return geometry::norm(p - (a + t * ab));
+}
+
+// Distance between two disjoint polygons (vertex-to-edge both ways).
+double polygon_distance(const Polygon& a, const Polygon& b) {
+  double d = 1e300;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Polygon& p = pass ? b : a;
+    const Polygon& q = pass ? a : b;
+    for (const auto& v : p)
+      for (std::size_t i = 0; i < q.size(); ++i)
+        d = std::min(d, segment_distance(v, q[i], q[(i + 1) % q.size()]));
+  }
+  return d;
+}
+
+rs::Path path_of(const json& leg, double radius) {
+  rs::Path path;
+  path.radius = radius;
+  for (const auto& s : leg["segments"]) {
+    const std::string steer = s["steer"];
+    path.segments.push_back(
+        {static_cast<rs::Steer>(steer[0]), s["gear"].get<int>(), s["length"].get<double>()});
+  }
+  return path;
+}
+
+geometry::Pose2 pose_of(const json& j) { return {j[0], j[1], j[2]}; }
+
+// Checks a written design against the input scene without using the
+// optimizer: returns the number of tours found.
+int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
+  const Scene out = geometry::load_scene((dir / "layout.json").string());
+  EXPECT_EQ(out.name, input.name);
+  EXPECT_EQ(out.room, input.room);
+  EXPECT_EQ(out.door, input.door);
+  EXPECT_EQ(out.wheelchair, input.wheelchair);
+  EXPECT_EQ(out.relations, input.relations);
+  EXPECT_EQ(out.activity, input.activity);
+  EXPECT_EQ(out.weights, input.weights);
+  EXPECT_EQ(out.objects.size(), input.objects.size());
+  const Polygon zone = geometry::door_clear_zone(out);
+  for (std::size_t i = 0; i < out.objects.size(); ++i) {
+    const auto& o = out.objects[i];
+    const auto& in = input.objects[i];
+    EXPECT_EQ(o.id, in.id);
+    EXPECT_EQ(o.size, in.size) << o.id;
+    EXPECT_EQ(o.footprint, in.footprint) << o.id;
+    EXPECT_EQ(o.fixed, in.fixed);
+    EXPECT_EQ(o.wall, in.wall);
+    EXPECT_EQ(o.approach, in.approach);
+    if (in.fixed) {
+      EXPECT_EQ(o.pose, in.pose) << "fixed object " << o.id << " moved";
+    }
+    const Polygon fp = geometry::world_footprint(o);
+    EXPECT_TRUE(geometry::polygon_inside(fp, out.room.polygon)) << o.id << " outside the room";
+    EXPECT_FALSE(geometry::interiors_overlap(fp, zone)) << o.id << " in the door zone";
+    for (std::size_t j = i + 1; j < out.objects.size(); ++j)
+      EXPECT_FALSE(geometry::interiors_overlap(fp, geometry::world_footprint(out.objects[j])))
+          << o.id << " overlaps " << out.objects[j].id;
+  }
+
+  // Tours, re-validated in the final layout with the continuous checks.
+  geometry::CSpace cspace(out);
+  const double radius = out.wheelchair.turning_radius;
+  planning::MotionValidator validator(cspace, radius);
+  const json tours = json::parse(read(dir / "tours.json"));
+  EXPECT_EQ(tours["tours"].size(), static_cast<std::size_t>(out.activity.sequences));
+  int found = 0;
+  for (const auto& t : tours["tours"]) {
+    const auto seq = t["sequence"].get<std::vector<std::string>>();
+    EXPECT_EQ(seq.front(), "door");
+    EXPECT_GT(t["likelihood"].get<double>(), 0.0);
+    if (!t["found"].get<bool>()) {
+      EXPECT_TRUE(t["legs"].empty());
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(t["legs"].size(), seq.size() - 1);
+    geometry::Pose2 at = geometry::door_start_pose(out);
+    double length = 0.0;
+    for (std::size_t i = 0; i < t["legs"].size(); ++i) {
+      const auto& leg = t["legs"][i];
+      const auto from = pose_of(leg["from"]), to = pose_of(leg["to"]);
+      EXPECT_NEAR(from.x, at.x, 1e-9);
+      EXPECT_NEAR(from.y, at.y, 1e-9);
+      EXPECT_NEAR(geometry::wrap_angle(from.theta - at.theta), 0.0, 1e-9);
+      const rs::Path path = path_of(leg, radius);
+      const auto end = rs::pose_at(from, path, path.length());
+      EXPECT_NEAR(end.x, to.x, 1e-6);
+      EXPECT_NEAR(end.y, to.y, 1e-6);
+      EXPECT_NEAR(geometry::wrap_angle(end.theta - to.theta), 0.0, 1e-6);
+      EXPECT_TRUE(validator.path_free(from, path)) << "leg " << i << " of a tour collides";
+      // The leg ends at the object of the sequence: the chair stops `gap` away.
+      const int obj = out.find_object(seq[i + 1]);
+      EXPECT_GE(obj, 0);
+      if (obj < 0) return -1;
+      const double l = out.wheelchair.length / 2, w = out.wheelchair.width / 2;
+      const Polygon chair{geometry::to_world(to, {-l, -w}), geometry::to_world(to, {l, -w}),
+                          geometry::to_world(to, {l, w}), geometry::to_world(to, {-l, w})};
+      const double gap = out.objects[obj].approach_or_default().gap;
+      EXPECT_NEAR(polygon_distance(chair, geometry::world_footprint(out.objects[obj])), gap, 0.02)
+          << "leg " << i << " does not stop at " << seq[i + 1];
+      length += path.length();
+      at = to;
+    }
+    EXPECT_NEAR(t["metrics"]["length"].get<double>(), length, 1e-6);
+  }
+  return found;
+}
+
+TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
+  const Scene scene = geometry::load_scene(kBedroom);
+  DesignOptions options;
+  options.seed = 3;
+  options.iterations = 25;
+  options.threads = 2;
+  const auto result = design(scene, options);
+  EXPECT_TRUE(result.valid);
+  EXPECT_EQ(result.proposals, 25);
+  EXPECT_LE(result.final.total(), result.initial.total() + 1e-12);
+  const auto dir = std::filesystem::temp_directory_path() / "hrspace_design_test";
+  std::filesystem::remove_all(dir);
+  write_design(result, {3, "baseline", 25}, dir);
+  const int found = check_design_dir(scene, dir);
+  EXPECT_EQ(found, result.final.tours_found);
+  // The paper's bedroom is tourable: some tours are found.
+  EXPECT_GT(found, 0);
+  const json report = json::parse(read(dir / "report.json"));
+  EXPECT_EQ(report["trace"].size(), 25u);
+  EXPECT_NEAR(report["cost"]["final"].get<double>(), result.final.total(), 1e-12);
+  EXPECT_LE(report["time_s"]["planning"].get<double>(), report["time_s"]["total"].get<double>());
+  const std::string svg = read(dir / "design.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  for (const auto& o : scene.objects) EXPECT_NE(svg.find(">" + o.id + "<"), std::string::npos);
+}
+
+TEST(Design, SameSeedGivesByteIdenticalFilesWithOneAndTwoThreads) {
+  const Scene scene = geometry::load_scene(kBedroom);
+  std::string layout[2], tours[2];
+  for (int t = 0; t < 2; ++t) {
+    DesignOptions options;
+    options.seed = 11;
+    options.iterations = 6;
+    options.threads = t + 1;
+    const auto r = design(scene, options);
+    EXPECT_EQ(r.threads, t + 1);
+    layout[t] = geometry::write_scene(r.layout);
+    tours[t] = tours_document(r);
+  }
+  EXPECT_EQ(layout[0], layout[1]);
+  EXPECT_EQ(tours[0], tours[1]);
+}
+
+TEST(Design, InvalidStartingLayoutIsSeparatedOrReportedInvalid) {
+  // Two movable objects start overlapping (allowed by the format): the best
+  // layout must be a valid one, or the result must say it is not.
+  Scene scene = geometry::load_scene(kBedroom);
+  const int lamp = scene.find_object("lamp"), dresser = scene.find_object("dresser");
+  scene.objects[lamp].pose = {scene.objects[dresser].pose.x - 0.1, scene.objects[dresser].pose.y,
+                              0.0};
+  ASSERT_FALSE(layout_violation(scene).empty());
+  DesignOptions options;
+  options.iterations = 40;
+  const auto r = design(scene, options);
+  EXPECT_EQ(r.valid, layout_violation(r.layout).empty());
+}
+
+TEST(Design, StopFlagEndsTheRunAndKeepsTheBest) {
+  const Scene scene = geometry::load_scene(kBedroom);
+  std::atomic<bool> stop{false};
+  DesignOptions options;
+  options.iterations = 100;
+  int calls = 0;
+  const auto r = design(scene, options, &stop, [&](const DesignStep&) {
+    if (++calls == 3) stop.store(true);
+  });
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.proposals, 3);
+  EXPECT_TRUE(r.valid);
+}
+
+}  // namespace
+}  // namespace hrs::optimize
