@@ -5,16 +5,20 @@
 // Pairs: 4096 random pairs, start and goal uniform in a box of half-size
 // 5 m (headings uniform), turning radius 0.7 m, fixed seed. "near" variants
 // use a 1 m box (most queries within 2 radii, where the CCC/CCCC families
-// compete and pruning helps least).
+// compete and pruning helps least). The decomposition is built for a 5 m x
+// 5 m room (samples in a 10 m x 10 m box around the start): "far" queries
+// partly fall outside it, where the kd-tree prunes poorly.
 
 #include <benchmark/benchmark.h>
 
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
+#include "rs/decomposition.h"
 #include "rs/reeds_shepp.h"
 
 namespace {
@@ -91,6 +95,45 @@ void BM_OmplDistance(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "far" : "near");
 }
 BENCHMARK(BM_OmplDistance)->Arg(0)->Arg(1);
+
+const hrs::rs::Decomposition& decomposition() {
+  static const hrs::rs::Decomposition d = [] {
+    hrs::rs::DecompositionOptions o;
+    o.radius = kRadius;
+    o.room_width = 5.0;
+    o.room_depth = 5.0;
+    std::mt19937_64 rng(1);
+    return hrs::rs::Decomposition(o, rng);
+  }();
+  return d;
+}
+
+//! Paper mode: nearest sample's word (kd-tree), then that word alone.
+void BM_RsDecompositionPredictedLength(benchmark::State& state) {
+  const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
+  const auto& d = decomposition();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ & 4095];
+    benchmark::DoNotOptimize(d.predicted_length(p.a, p.b));
+  }
+  state.SetLabel(std::to_string(d.samples().size()) + " samples, " +
+                 (state.range(0) == 0 ? "far" : "near"));
+}
+BENCHMARK(BM_RsDecompositionPredictedLength)->Arg(0)->Arg(1);
+
+//! The kd-tree look-up alone.
+void BM_RsDecompositionPredictWord(benchmark::State& state) {
+  const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
+  const auto& d = decomposition();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ & 4095];
+    benchmark::DoNotOptimize(d.predict_word(p.a, p.b));
+  }
+  state.SetLabel(state.range(0) == 0 ? "far" : "near");
+}
+BENCHMARK(BM_RsDecompositionPredictWord)->Arg(0)->Arg(1);
 
 void BM_RsSample(benchmark::State& state) {
   const auto& pairs = pairs_for(0);
