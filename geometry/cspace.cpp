@@ -56,6 +56,28 @@ std::vector<Vec2> hull(std::vector<Vec2> pts) {
   return h;
 }
 
+//! Convex hull of 12 points into a fixed array (no allocation); returns the
+//! vertex count. Same algorithm and caveat as hull().
+int hull_fixed(const Vec2 (&in)[12], Vec2 (&out)[12]) {
+  Vec2 pts[12];
+  std::copy(in, in + 12, pts);
+  std::sort(pts, pts + 12,
+            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  Vec2 h[24];
+  int k = 0;
+  for (int i = 0; i < 12; ++i) {
+    while (k >= 2 && cross(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
+    h[k++] = pts[i];
+  }
+  for (int i = 10, t = k + 1; i >= 0; --i) {
+    while (k >= t && cross(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
+    h[k++] = pts[i];
+  }
+  const int n = std::min(k - 1, 12);
+  std::copy(h, h + n, out);
+  return n;
+}
+
 //! Outward unit normals of a counter-clockwise convex polygon's edges.
 std::vector<Vec2> edge_normals(const std::vector<Vec2>& poly) {
   std::vector<Vec2> out;
@@ -326,23 +348,40 @@ bool CSpace::refine_hits(const SlicePiece& piece, const Motion& motion, int dept
     const Vec2 axes[2] = {u, v};
     return !separated([&](Vec2 m) { return support(q, 8, m); }, axes, 2);
   }
-  // Arc: centre positions in the triangle T, footprint within the cover of
-  // the heading range; T ⊕ cover has the normals of both.
+  // Arc. A sub-arc whose end (or middle) pose truly overlaps the piece is a
+  // certain hit; otherwise test the cover: centre positions in the triangle T
+  // and the footprint inside the swept cover of the heading range, T ⊕ cover,
+  // whose normals are those of T and of the cover. Split while undecided.
+  auto pose_at = [&](double h) {
+    const double phi = h - motion.side * 0.5 * kPi;
+    return Pose2{motion.centre.x + motion.radius * std::cos(phi),
+                 motion.centre.y + motion.radius * std::sin(phi), h};
+  };
+  auto pose_hits = [&](double h) {
+    const Motion at{Motion::kPose, pose_at(h), 0.0, {}, 0.0, 0.0, 0.0, 0.0};
+    return refine_hits(piece, at, 0);
+  };
+  if (depth == 0 && (pose_hits(motion.ha) || pose_hits(motion.hb))) return true;
   Vec2 cover[12];
   swept_cover(corners_, std::min(motion.ha, motion.hb), std::max(motion.ha, motion.hb), cover);
-  const std::vector<Vec2> cover_hull = hull(std::vector<Vec2>(cover, cover + 12));
-  const std::vector<Vec2> cover_normals = edge_normals(cover_hull);
+  Vec2 cover_hull[12];
+  const int nh = hull_fixed(cover, cover_hull);
   Vec2 tri[3];
   Vec2 axes[16];
   int naxes = arc_triangle(motion, motion.ha, motion.hb, tri, axes);
-  for (const Vec2& n : cover_normals)
-    if (naxes < 16) axes[naxes++] = n;
-  const bool sep =
-      separated([&](Vec2 m) { return support(tri, 3, m) + support(cover_hull, m); }, axes, naxes);
+  for (int i = 0; i < nh && naxes < 16; ++i) {
+    const Vec2 e = cover_hull[(i + 1) % nh] - cover_hull[i];
+    const double l = norm(e);
+    if (l > 1e-12) axes[naxes++] = {e.y / l, -e.x / l};
+  }
+  const bool sep = separated(
+      [&](Vec2 m) { return support(tri, 3, m) + support(cover_hull, nh, m); }, axes, naxes);
   if (sep) return false;
   if (depth >= kRefineDepth) return true;
+  const double mid = 0.5 * (motion.ha + motion.hb);
+  if (pose_hits(mid)) return true;
   Motion lo = motion, hi = motion;
-  lo.hb = hi.ha = 0.5 * (motion.ha + motion.hb);
+  lo.hb = hi.ha = mid;
   return refine_hits(piece, lo, depth + 1) || refine_hits(piece, hi, depth + 1);
 }
 
