@@ -52,6 +52,33 @@ void BM_PointQuery(benchmark::State& state) {
 }
 BENCHMARK(BM_PointQuery)->Arg(72);
 
+//! The bedroom with three more small objects (8 in all), the target's setting.
+const Scene& bedroom8() {
+  static const Scene s = [] {
+    Scene b = bedroom();
+    const double xy[3][2] = {{3.2, 1.4}, {1.6, 2.2}, {0.7, 3.0}};
+    for (int i = 0; i < 3; ++i) {
+      hrs::geometry::Object o;
+      o.id = "extra" + std::to_string(i);
+      o.footprint = {{-0.2, -0.2}, {0.2, -0.2}, {0.2, 0.2}, {-0.2, 0.2}};
+      o.pose = {xy[i][0], xy[i][1], 0.3 * i};
+      b.objects.push_back(o);
+    }
+    return b;
+  }();
+  return s;
+}
+
+void BM_PointQuery8Objects(benchmark::State& state) {
+  const CSpace cs(bedroom8());
+  const auto poses = random_poses(bedroom8(), 4096, 1);
+  std::size_t i = 0, free = 0;
+  for (auto _ : state) free += cs.is_free(poses[i++ & 4095]);
+  benchmark::DoNotOptimize(free);
+  state.counters["objects"] = static_cast<double>(bedroom8().objects.size());
+}
+BENCHMARK(BM_PointQuery8Objects);
+
 //! Point queries restricted to free poses (the planner's common case).
 void BM_PointQueryFree(benchmark::State& state) {
   const CSpace cs(bedroom());
