@@ -105,6 +105,12 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
   return out;
 }
 
+std::string format_number(double v) {
+  char buf[64];
+  auto [p, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+  return ec == std::errc() ? std::string(buf, p) : std::string("nan");
+}
+
 std::string read_input(const std::string& path) {
   if (path == "-") {
     return std::string(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());

@@ -40,6 +40,9 @@ class Args {
 std::vector<double> parse_numbers(const std::string& text, std::size_t count,
                                   const std::string& what);
 
+//! Shortest decimal text that reads back as exactly `v` (std::to_chars).
+std::string format_number(double v);
+
 //! Reads a whole file, or stdin when path is "-"; InputError when unreadable.
 std::string read_input(const std::string& path);
 

@@ -67,8 +67,9 @@ int cmd_collide(const Argv& argv) {
   for (const auto& r : rows) {
     const geometry::Pose2 p{r[0], r[1], r[2]};
     const geometry::Clearance c = cs.clearance(p);
-    std::printf("%.17g,%.17g,%.17g,%d,%.17g,%.17g\n", r[0], r[1], r[2], cs.is_free(p) ? 1 : 0,
-                c.left, c.right);
+    std::printf("%s,%s,%s,%d,%s,%s\n", format_number(r[0]).c_str(), format_number(r[1]).c_str(),
+                format_number(r[2]).c_str(), cs.is_free(p) ? 1 : 0, format_number(c.left).c_str(),
+                format_number(c.right).c_str());
   }
   return 0;
 }

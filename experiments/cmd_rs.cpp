@@ -30,12 +30,6 @@ constexpr const char* kUsage =
     "space-separated, in the same order. Identical poses give length 0 and an\n"
     "empty word.\n";
 
-std::string format_number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return buf;
-}
-
 }  // namespace
 
 int cmd_rs(const Argv& argv) {

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# End-to-end tests of the hrspace command. Usage: cli_test.sh HRSPACE SOURCE_DIR
+set -u
+bin="$1"; src="$2"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0
+check() {  # check NAME EXPECTED_STATUS COMMAND... ; stdout in $tmp/out, stderr in $tmp/err
+  local name="$1" want="$2"; shift 2
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local got=$?
+  if [ "$got" != "$want" ]; then
+    echo "FAIL $name: exit $got, expected $want"; sed 's/^/  stderr: /' "$tmp/err" | head -5; fails=$((fails+1))
+  else
+    echo "ok   $name"
+  fi
+}
+expect_err() {  # expect_err NAME PATTERN: stderr is one line matching PATTERN
+  local lines; lines=$(wc -l <"$tmp/err")
+  if [ "$lines" != 1 ] || ! grep -q -- "$2" "$tmp/err"; then
+    echo "FAIL $1: stderr should be one line matching '$2', got:"; sed 's/^/  /' "$tmp/err"; fails=$((fails+1))
+  fi
+}
+expect_out() {  # expect_out NAME PATTERN (grep -x on stdout)
+  if ! grep -qx -- "$2" "$tmp/out"; then
+    echo "FAIL $1: stdout lacks line '$2'"; head -5 "$tmp/out" | sed 's/^/  /'; fails=$((fails+1))
+  fi
+}
+
+# validate
+for f in "$src"/scenes/*.json; do
+  check "validate $(basename "$f")" 0 "$bin" validate "$f"
+done
+check "validate missing file" 2 "$bin" validate "$tmp/nope.json"
+expect_err "missing file message" "nope.json"
+printf '' >"$tmp/empty.json"
+check "validate empty file" 2 "$bin" validate "$tmp/empty.json"
+expect_err "empty file message" "empty.json"
+printf '{"format": ' >"$tmp/broken.json"
+check "validate invalid JSON" 2 "$bin" validate "$tmp/broken.json"
+expect_err "invalid JSON message" "broken.json"
+sed 's/"width": 0.9/"width": -0.9/' "$src/scenes/bedroom.json" >"$tmp/neg.json"
+check "validate negative door width" 2 "$bin" validate "$tmp/neg.json"
+expect_err "negative width names the pointer" "/door/width"
+check "validate without a scene" 2 "$bin" validate
+check "unknown command" 2 "$bin" frobnicate
+check "unknown option" 2 "$bin" collide "$src/scenes/bedroom.json" --posse x
+check "help" 0 "$bin" --help
+check "collide help" 0 "$bin" collide --help
+
+# collide: header, one row per pose in order, free flag, clearances
+printf 'x,y,theta\n2.2,1.2,0\n-1,0,0\n0.2,0.2,0\n' >"$tmp/poses.csv"
+check "collide" 0 "$bin" collide "$src/scenes/bedroom.json" --poses "$tmp/poses.csv"
+expect_out "collide header" "x,y,theta,free,clear_left,clear_right"
+[ "$(wc -l <"$tmp/out")" = 4 ] || { echo "FAIL collide: expected 4 lines"; fails=$((fails+1)); }
+[ "$(sed -n 3p "$tmp/out" | cut -d, -f4)" = 0 ] || { echo "FAIL collide: outside pose must not be free"; fails=$((fails+1)); }
+[ "$(sed -n 4p "$tmp/out" | cut -d, -f4)" = 0 ] || { echo "FAIL collide: corner pose must not be free"; fails=$((fails+1)); }
+printf '2.2,1.2,0\n' | "$bin" collide "$src/scenes/bedroom.json" --poses - >"$tmp/stdin.out" 2>&1
+[ "$(sed -n 2p "$tmp/stdin.out")" = "$(sed -n 2p "$tmp/out")" ] || { echo "FAIL collide: stdin without header differs"; fails=$((fails+1)); }
+printf '1,2,x\n' >"$tmp/badposes.csv"
+check "collide bad number" 2 "$bin" collide "$src/scenes/bedroom.json" --poses "$tmp/badposes.csv"
+expect_err "bad number names line and field" "line 1, field 3"
+printf '1,2\n' >"$tmp/short.csv"
+check "collide short row" 2 "$bin" collide "$src/scenes/bedroom.json" --poses "$tmp/short.csv"
+
+# rs: header, word and signed segments; bad radius
+printf 'x0,y0,t0,x1,y1,t1\n0,0,0,2,0,0\n0,0,0,-1,0,0\n0,0,0,0,0,0\n' >"$tmp/pairs.csv"
+check "rs" 0 "$bin" rs --radius 0.7 --pairs "$tmp/pairs.csv"
+expect_out "rs header" "length,word,segments"
+expect_out "rs straight ahead" "2,S+,2"
+expect_out "rs straight back" "1,S-,-1"
+expect_out "rs identical poses" "0,,"
+check "rs zero radius" 2 "$bin" rs --radius 0 --pairs "$tmp/pairs.csv"
+check "rs missing radius" 2 "$bin" rs --pairs "$tmp/pairs.csv"
+
+if [ "$fails" -ne 0 ]; then echo "$fails failure(s)"; exit 1; fi
+echo "all CLI checks passed"
