@@ -13,6 +13,8 @@ using Argv = std::vector<std::string>;
 int cmd_validate(const Argv& args);  //!< experiments/cmd_geometry.cpp
 int cmd_collide(const Argv& args);   //!< experiments/cmd_geometry.cpp
 int cmd_rs(const Argv& args);        //!< experiments/cmd_rs.cpp
+int cmd_plan(const Argv& args);      //!< experiments/cmd_planning.cpp
+int cmd_tour(const Argv& args);      //!< experiments/cmd_planning.cpp
 int cmd_design(const Argv& args);    //!< experiments/cmd_optimize.cpp
 
 }  // namespace hrs::cli

@@ -22,6 +22,8 @@ constexpr Command kCommands[] = {
     {"validate", "check a scene file and print its summary", hrs::cli::cmd_validate},
     {"collide", "collision and clearance of poses (CSV in, CSV out)", hrs::cli::cmd_collide},
     {"rs", "shortest Reeds-Shepp paths for pose pairs (CSV in, CSV out)", hrs::cli::cmd_rs},
+    {"plan", "one wheelchair leg by the baseline RRT (JSON)", hrs::cli::cmd_plan},
+    {"tour", "one tour of an object sequence from the door (JSON)", hrs::cli::cmd_tour},
     {"design", "optimize a room layout (layout, tours, SVG, report)", hrs::cli::cmd_design},
 };
 

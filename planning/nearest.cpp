@@ -39,6 +39,10 @@ void PoseNearest::insert(const geometry::Pose2& pose, std::int32_t id) {
   n.id = id;
   const auto index = static_cast<std::int32_t>(nodes_.size());
   nodes_.push_back(n);
+  if (id >= 0) {
+    if (index_of_id_.size() <= static_cast<std::size_t>(id)) index_of_id_.resize(id + 1, -1);
+    index_of_id_[id] = index;
+  }
   if (index == 0) return;
   std::int32_t cur = 0;
   int depth = 0;
@@ -55,11 +59,18 @@ void PoseNearest::insert(const geometry::Pose2& pose, std::int32_t id) {
   }
 }
 
+void PoseNearest::remove(std::int32_t id) {
+  if (id < 0 || static_cast<std::size_t>(id) >= index_of_id_.size()) return;
+  if (index_of_id_[id] >= 0) nodes_[index_of_id_[id]].removed = true;
+}
+
 void PoseNearest::search(std::int32_t node, int depth, const double q[3], double lo[3],
                          double hi[3], std::size_t k, std::vector<Candidate>& heap) const {
   const Node& n = nodes_[node];
   const Candidate c{point_distance(q, n.p), static_cast<std::uint32_t>(node)};
-  if (heap.size() < k) {
+  if (n.removed) {
+    // Guides the descent only.
+  } else if (heap.size() < k) {
     heap.push_back(c);
     std::push_heap(heap.begin(), heap.end());
   } else if (c < heap.front()) {
@@ -93,6 +104,7 @@ void PoseNearest::nearest(const geometry::Pose2& query, std::size_t k,
   heap.reserve(k + 1);
   if (nodes_.size() < kLinearScanBelow) {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
+      if (nodes_[i].removed) continue;
       const Candidate c{point_distance(q, nodes_[i].p), static_cast<std::uint32_t>(i)};
       if (heap.size() < k) {
         heap.push_back(c);

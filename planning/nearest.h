@@ -26,12 +26,19 @@ class PoseNearest {
 
   //! Adds a pose with the caller's id (ids need not be dense).
   void insert(const geometry::Pose2& pose, std::int32_t id);
+  //! Removes the pose with this id from later answers (a tombstone: O(1),
+  //! the node still guides the search). Unknown ids are ignored.
+  void remove(std::int32_t id);
   //! Ids of the (at most) k nearest poses to `query`, nearest first; ties are
   //! broken by insertion order, so the answer is deterministic.
   void nearest(const geometry::Pose2& query, std::size_t k, std::vector<std::int32_t>& out) const;
 
+  //! Poses inserted, removed ones included.
   std::size_t size() const { return nodes_.size(); }
-  void clear() { nodes_.clear(); }
+  void clear() {
+    nodes_.clear();
+    index_of_id_.clear();
+  }
   double heading_weight() const { return weight_; }
 
   //! Below this many poses a linear scan answers queries.
@@ -42,6 +49,7 @@ class PoseNearest {
     double p[3];  //!< x, y, theta wrapped to (−pi, pi]
     std::int32_t id;
     std::int32_t child[2] = {-1, -1};
+    bool removed = false;
   };
   struct Candidate {
     double d;
@@ -54,7 +62,8 @@ class PoseNearest {
   double box_bound(const double q[3], const double lo[3], const double hi[3]) const;
 
   double weight_;
-  std::vector<Node> nodes_;  //!< nodes_[0] is the kd-tree root
+  std::vector<Node> nodes_;                //!< nodes_[0] is the kd-tree root
+  std::vector<std::int32_t> index_of_id_;  //!< node index per non-negative id, or -1
 };
 
 }  // namespace hrs::planning

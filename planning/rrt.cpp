@@ -68,7 +68,8 @@ LegPlanner::LegPlanner(const geometry::Scene& scene, const CSpace& cspace, Plann
       uniform_(UniformSampler::for_room(scene)),
       hooks_(hooks),
       validator_(cspace, scene.wheelchair.turning_radius),
-      nearest_(options.heading_weight) {}
+      nearest_(options.heading_weight),
+      untried_(options.heading_weight) {}
 
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed) {
   RrtTree tree;
@@ -99,6 +100,7 @@ std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pos
     tree.nodes.push_back({pose, parent, std::move(piece), cost});
     last = static_cast<std::int32_t>(tree.nodes.size() - 1);
     nearest_.insert(pose, last);
+    untried_.insert(pose, last);
     parent = last;
     if (i + 1 == steps && limit == total) reached = true;
   }
@@ -116,8 +118,10 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
 
   if (tree.nodes.empty()) tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
   nearest_.clear();
+  untried_.clear();
   for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
     nearest_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
+    untried_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
   }
 
   const bool ends_free = validator_.pose_free(from) && validator_.pose_free(to);
@@ -126,6 +130,7 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   // (same nearest node, same curve, same collision), so it is skipped; this
   // changes the work, never the outcome.
   std::size_t tree_size_at_goal_attempt = 0;
+  const std::size_t k = static_cast<std::size_t>(std::max(1, options_.k_nearest));
   std::int32_t goal_node = -1;
   if (ends_free && pose_gap(from, to) <= options_.goal_tolerance) goal_node = 0;
   int it = 0;
@@ -134,8 +139,13 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
     ++it;
     const bool to_goal = unit(rng) < options_.goal_bias;
     const Pose2 target = to_goal ? to : sampler.sample(rng);
-    if (to_goal && tree.nodes.size() == tree_size_at_goal_attempt) continue;
-    nearest_.nearest(target, static_cast<std::size_t>(std::max(1, options_.k_nearest)), knn_);
+    if (to_goal && options_.skip_tried_goal_nodes) {
+      untried_.nearest(target, k, knn_);  // the k nearest nodes not yet tried
+      if (knn_.empty()) continue;
+    } else {
+      if (to_goal && tree.nodes.size() == tree_size_at_goal_attempt) continue;
+      nearest_.nearest(target, k, knn_);
+    }
     std::int32_t best = -1;
     double best_length = std::numeric_limits<double>::infinity();
     for (std::int32_t id : knn_) {
@@ -148,9 +158,15 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
     if (best < 0) continue;
     bool reached = false;
     if (to_goal) {
+      const std::size_t before = tree.nodes.size();
       const std::int32_t last =
           extend(tree, best, to, std::numeric_limits<double>::infinity(), reached);
       tree_size_at_goal_attempt = tree.nodes.size();
+      // The chosen node and the nodes along its curve lead to the goal along
+      // the same (blocked) curve: a shortest path's suffix is a shortest path.
+      untried_.remove(best);
+      for (std::size_t i = before; i < tree.nodes.size(); ++i)
+        untried_.remove(static_cast<std::int32_t>(i));
       if (reached && pose_gap(tree.nodes[last].pose, to) <= options_.goal_tolerance) {
         goal_node = last;
         break;

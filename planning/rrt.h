@@ -49,6 +49,11 @@ struct PlannerOptions {
   //! A path whose end misses the goal by more (metres + radians) is not
   //! accepted: guards against an approximate steering function (§V-A).
   double goal_tolerance = 1e-6;
+  //! Towards the goal, pick among the k nearest nodes whose RS curve to the
+  //! goal has not been found blocked yet. The paper's text re-picks the same
+  //! nearest nodes (blocked again, the iteration wasted); with this on, the
+  //! goal is tried from ever farther nodes. Off: the literal baseline.
+  bool skip_tried_goal_nodes = true;
 };
 
 //! Statistics of one leg query.
@@ -158,6 +163,7 @@ class LegPlanner {
   PlannerHooks hooks_;  //!< resolved at each use, so the planner stays movable
   MotionValidator validator_;
   PoseNearest nearest_;
+  PoseNearest untried_;  //!< nodes not yet tried towards the goal
   std::vector<std::int32_t> knn_;
 };
 
