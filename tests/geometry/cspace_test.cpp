@@ -17,17 +17,8 @@ namespace hrs::geometry {
 namespace {
 
 using testing::ExactReference;
+using testing::random_pose;
 constexpr double kPi = std::numbers::pi;
-
-Pose2 random_pose(const Scene& s, std::mt19937_64& rng) {
-  double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-  for (const Vec2& v : s.room.polygon) {
-    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
-    ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
-  }
-  std::uniform_real_distribution<double> ux(xmin, xmax), uy(ymin, ymax), ut(-kPi, kPi);
-  return {ux(rng), uy(rng), ut(rng)};
-}
 
 struct Counts {
   long free = 0, ref_free = 0, missed = 0, conservative = 0;

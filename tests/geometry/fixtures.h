@@ -2,7 +2,10 @@
 // Scenes for geometry tests: an L-shaped room with a non-convex (U-shaped)
 // object, corridors for clearance, and the scene files in scenes/.
 
+#include <algorithm>
 #include <filesystem>
+#include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -55,6 +58,18 @@ inline std::vector<std::string> scene_files() {
       if (e.path().extension() == ".json") out.push_back(e.path().string());
   std::sort(out.begin(), out.end());
   return out;
+}
+
+//! A uniform random pose in the room's bounding box, heading in [−π, π).
+inline geometry::Pose2 random_pose(const geometry::Scene& s, std::mt19937_64& rng) {
+  double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
+  for (const geometry::Vec2& v : s.room.polygon) {
+    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
+    ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
+  }
+  std::uniform_real_distribution<double> ux(xmin, xmax), uy(ymin, ymax),
+      ut(-std::numbers::pi, std::numbers::pi);
+  return {ux(rng), uy(rng), ut(rng)};
 }
 
 }  // namespace hrs::testing
