@@ -7,6 +7,7 @@
 
 #include "geometry/polygon_ops.h"
 #include "optimize/thread_pool.h"
+#include "planning/motion_validator.h"
 
 namespace hrs::optimize {
 
@@ -26,6 +27,23 @@ std::uint64_t splitmix64(std::uint64_t x) {
 }
 
 }  // namespace
+
+bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour) {
+  if (!tour.found) return true;
+  planning::MotionValidator validator(cspace, radius);
+  for (std::size_t i = 0; i < tour.legs.size(); ++i) {
+    const auto& leg = tour.legs[i];
+    const double length = leg.path.length();
+    if (validator.free_prefix(leg.from, leg.path, kRecheckPiece) < length - 1e-9) {
+      tour.found = false;
+      tour.legs.clear();
+      tour.metrics = {};
+      tour.stats.depth = static_cast<int>(i);
+      return false;
+    }
+  }
+  return true;
+}
 
 std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
   std::uint64_t h = splitmix64(seed);
@@ -82,16 +100,25 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
 
   int iteration = 0;  // 0: the initial layout; proposals count from 1
   std::vector<planning::Tour> tours(m);
+  std::vector<int> invalidated(m, 0);
   double planning_ms = 0.0;
   auto plan_all = [&] {
     const auto p0 = Clock::now();
     pool.run(m, [&](int k) {
       planners[k]->set_seed(tour_seed(options.seed, iteration, k));
       tours[k] = planners[k]->plan(result.sequences[k].nodes);
+      invalidated[k] = recheck_tour(cspace, scene.wheelchair.turning_radius, tours[k]) ? 0 : 1;
     });
+    for (int k = 0; k < m; ++k) result.tours_invalidated += invalidated[k];
     planning_ms = 1e3 * seconds_since(p0);
     result.time_planning_s += planning_ms / 1e3;
   };
+
+  // With all path weights 0 the cost does not depend on the tours: plan only
+  // the initial and the best layout (Fig. 1's "designed without the chair").
+  const auto& wp = scene.weights.path;
+  const bool plan_every_iteration = wp[0] != 0.0 || wp[1] != 0.0 || wp[2] != 0.0;
+  result.planned_every_iteration = plan_every_iteration;
 
   plan_all();
   CostTerms current_terms = model.evaluate(poses, tours);
@@ -119,7 +146,8 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
     ++iteration;
     work.objects[move.object].pose = move.to;
     cspace.move_object(move.object, move.to);
-    plan_all();
+    planning_ms = 0.0;
+    if (plan_every_iteration) plan_all();
     proposed_terms = model.evaluate(p, tours);
     return proposed_terms.total();
   };
@@ -145,6 +173,7 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
     if (e.valid) {
       step.proposed = proposed_terms;
       step.planning_ms = planning_ms;
+      step.planned = plan_every_iteration;
     }
     if (e.accepted) {
       current_terms = proposed_terms;
@@ -166,6 +195,15 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
       result.layout.objects[i].pose = r.final_poses[i];
     result.final = current_terms;
     result.tours = current_tours;
+  }
+  if (!plan_every_iteration && r.best_valid) {
+    // Tour the best layout once, for tours.json and the feasible-tour count.
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+      cspace.move_object(static_cast<int>(i), r.best[i]);
+    iteration = r.proposals + 1;
+    plan_all();
+    result.tours = tours;
+    result.final = model.evaluate(r.best, tours);
   }
   result.proposals = r.proposals;
   result.valid_proposals = r.valid_proposals;

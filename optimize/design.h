@@ -11,7 +11,8 @@
 // (CSpace::move_object), the M tours are planned in parallel (one
 // TourPlanner per sequence, seeded from (seed, iteration, tour index), so the
 // result is the same for any number of threads), the cost is computed and the
-// Metropolis rule decides; a rejected move is undone in the C-space.
+// Metropolis rule decides; a rejected move is undone in the C-space. Every
+// found tour is re-certified (recheck_tour) before it counts.
 //
 // The initial temperature is a fraction of the initial cost (cost units are
 // metres, radians and m², so a fixed temperature would not fit every scene).
@@ -47,6 +48,7 @@ struct DesignStep {
   TraceEntry anneal;
   CostTerms proposed;        //!< terms of the proposed layout (zeros when invalid)
   double planning_ms = 0.0;  //!< wall time of planning the M tours
+  bool planned = false;      //!< the M tours were planned for this proposal
 };
 
 struct DesignResult {
@@ -61,7 +63,12 @@ struct DesignResult {
   double time_total_s = 0.0;
   double time_planning_s = 0.0;  //!< wall time spent planning tours
   double t_start = 0.0, t_end = 0.0;
+  //! Found tours that recheck_tour() turned to unfound (over all plannings).
+  int tours_invalidated = 0;
   int threads = 1;
+  //! False when all path weights are 0: then only the initial and the best
+  //! layout are toured (the cost does not depend on the tours).
+  bool planned_every_iteration = true;
   std::vector<DesignStep> trace;
 };
 
@@ -76,6 +83,15 @@ std::string object_violation(const geometry::Scene& scene, int index);
 DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
                     const std::atomic<bool>* stop = nullptr,
                     const std::function<void(const DesignStep&)>& progress = {});
+
+//! Pieces (metres) in which recheck_tour() certifies each leg.
+inline constexpr double kRecheckPiece = 0.05;
+
+//! Re-validates a found tour in `cspace` with the continuous checks, every
+//! leg cut into kRecheckPiece pieces; a tour with a leg that is not
+//! certified free becomes unfound (stats.depth = the failing leg). Returns
+//! false when it did so. Guards the outputs against planner defects.
+bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour);
 
 //! Seed of tour k at iteration `iteration` (0: the initial layout).
 std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour);

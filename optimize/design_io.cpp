@@ -115,7 +115,7 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
         {"proposed", finite_or_null(e.proposed_cost)},
         {"current", e.current_cost},
         {"best", finite_or_null(e.best_cost)}};
-    if (e.valid) {
+    if (s.planned) {
       step["tours_found"] = s.proposed.tours_found;
       step["planning_ms"] = s.planning_ms;
     }
@@ -133,6 +133,8 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
       {"stopped", result.stopped},
       {"valid", result.valid},
       {"threads", result.threads},
+      {"planned_every_iteration", result.planned_every_iteration},
+      {"tours_invalidated", result.tours_invalidated},
       {"cost",
        {{"initial", result.initial.total()}, {"final", result.final.total()}, {"terms", terms}}},
       {"time_s",

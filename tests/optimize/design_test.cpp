@@ -132,7 +132,9 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
       EXPECT_NEAR(end.x, to.x, 1e-6);
       EXPECT_NEAR(end.y, to.y, 1e-6);
       EXPECT_NEAR(geometry::wrap_angle(end.theta - to.theta), 0.0, 1e-6);
-      EXPECT_TRUE(validator.path_free(from, path)) << "leg " << i << " of a tour collides";
+      // Certified free in 5 cm pieces (whole long arcs have looser covers).
+      EXPECT_GE(validator.free_prefix(from, path, 0.05), path.length() - 1e-9)
+          << "leg " << i << " (" << seq[i] << " -> " << seq[i + 1] << ") is not certified free";
       // The leg ends at the object of the sequence: the chair stops `gap` away.
       const int obj = out.find_object(seq[i + 1]);
       EXPECT_GE(obj, 0);
