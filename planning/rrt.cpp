@@ -107,7 +107,8 @@ std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pos
   return last;
 }
 
-LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree) {
+LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
+                           int max_iterations) {
   const auto t0 = std::chrono::steady_clock::now();
   LegResult result;
   result.path.radius = radius_;
@@ -133,8 +134,9 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   const std::size_t k = static_cast<std::size_t>(std::max(1, options_.k_nearest));
   std::int32_t goal_node = -1;
   if (ends_free && pose_gap(from, to) <= options_.goal_tolerance) goal_node = 0;
+  const int iteration_cap = max_iterations >= 0 ? max_iterations : options_.max_iterations;
   int it = 0;
-  while (ends_free && goal_node < 0 && it < options_.max_iterations &&
+  while (ends_free && goal_node < 0 && it < iteration_cap &&
          static_cast<int>(tree.nodes.size()) < options_.max_nodes) {
     ++it;
     const bool to_goal = unit(rng) < options_.goal_bias;

@@ -141,7 +141,9 @@ class LegPlanner {
   LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed);
   //! Plans by growing `tree` (its root must be `from`, its edges free in the
   //! current layout: the caller prunes, §V-C). The tree keeps its new nodes.
-  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree);
+  //! `max_iterations` >= 0 overrides the option for this query (a repair, §V-B).
+  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
+                 int max_iterations = -1);
 
   const PlannerOptions& options() const { return options_; }
   double radius() const { return radius_; }

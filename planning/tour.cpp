@@ -134,7 +134,29 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
     LegSource source = LegSource::kPlanned;
     LegStats stats;
 
-    if (hooks_.legs) {
+    if (hooks_.provider) {
+      const bool may_plan = tour.stats.legs_planned < options_.max_leg_plans;
+      LegOutcome outcome = hooks_.provider->resolve(key, from, to, seed_, may_plan, planner_);
+      if (outcome.rejected) ++tour.stats.legs_rejected;
+      if (outcome.planned) {
+        if (!may_plan) {
+          tour.stats.capped = true;
+          return false;
+        }
+        ++tour.stats.legs_planned;
+        stats = outcome.stats;
+      }
+      tour.stats.rrt_iterations += static_cast<std::uint64_t>(outcome.stats.iterations);
+      tour.stats.collision_checks += outcome.stats.collision_checks;
+      if (!outcome.found) {
+        ++tour.stats.legs_failed;
+        continue;
+      }
+      source = outcome.source;
+      if (source == LegSource::kReused) ++tour.stats.legs_reused;
+      if (source == LegSource::kRepaired) ++tour.stats.legs_repaired;
+      path = std::move(outcome.path);
+    } else if (hooks_.legs) {
       rs::Path cached;
       if (hooks_.legs->lookup(key, from, to, cached)) {
         const bool valid =

@@ -13,9 +13,11 @@
 // Reuse hooks for the proposed planner (§V): a LegCache (path database,
 // §V-B) is consulted before each leg is planned, and every path it returns is
 // re-validated here with the continuous checks, so a stale path is never
-// returned; a TreeCache (§V-C) may hand the leg planner a tree to grow. The
-// baseline passes no hooks. Hooks are shared by the caller's choice and must
-// then be thread-safe themselves.
+// returned; a TreeCache (§V-C) may hand the leg planner a tree to grow. For
+// tours planned in parallel, a LegProvider (planning/reuse.h) instead answers
+// whole legs, each a pure function of its inputs, so that the tours agree
+// whatever thread planned a shared leg first. The baseline passes no hooks.
+// Hooks are shared by the caller's choice and must then be thread-safe.
 //
 // Thread-safety: a TourPlanner reads the CSpace (shared, const) and keeps all
 // mutable state per instance: M tours run in parallel with M planners. Object
@@ -62,6 +64,7 @@ struct LegKey {
   int from_slot = 0;
   int to_slot = 0;
   friend bool operator==(const LegKey&, const LegKey&) = default;
+  friend auto operator<=>(const LegKey&, const LegKey&) = default;
 };
 
 //! Path database hook (§V-B). lookup() may return any path: the tour planner
@@ -87,14 +90,48 @@ class TreeCache {
   virtual RrtTree* tree_for(const LegKey& key, const Pose2& from) = 0;
 };
 
+//! How a leg's path was obtained.
+enum class LegSource {
+  kPlanned,   //!< an RRT query from scratch (or from a reused tree)
+  kReused,    //!< a stored path, transformed and validated (§V-B)
+  kRepaired,  //!< a stored path's valid part kept, the gap re-planned (§V-B)
+};
+
+//! What a LegProvider answers for one leg.
+struct LegOutcome {
+  bool found = false;
+  rs::Path path;  //!< driven from the leg's `from`; free in the current layout
+  LegSource source = LegSource::kPlanned;
+  //! An RRT query was run (or would be: see LegProvider::resolve); it counts
+  //! against TourOptions::max_leg_plans.
+  bool planned = false;
+  bool rejected = false;  //!< a stored path existed but was not valid as it is
+  LegStats stats;         //!< work behind the outcome (RRT and validation)
+};
+
+//! Resolves whole legs for the proposed planner (§V; planning/reuse.h): path
+//! database, tree reuse and within-iteration sharing behind one call. Called
+//! from parallel tours, so it must be thread-safe, and each outcome must be a
+//! pure function of the key, the poses, the current layout and the
+//! provider's state: then tours agree whatever thread computed a leg first.
+class LegProvider {
+ public:
+  virtual ~LegProvider() = default;
+  //! The outcome of leg `key` from `from` to `to`. `tour_seed` is the calling
+  //! tour's seed; `planner` is the calling tour's (per-thread) leg planner.
+  //! With `may_plan` false no RRT query is run: an outcome that needs one
+  //! comes back with planned = true and found = false.
+  virtual LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to,
+                             std::uint64_t tour_seed, bool may_plan, LegPlanner& planner) = 0;
+};
+
 struct TourHooks {
   LegCache* legs = nullptr;    //!< null: no path database (baseline)
   TreeCache* trees = nullptr;  //!< null: a fresh tree per leg (baseline)
   PlannerHooks planner;        //!< sampler / steering of the leg planner
+  //! Non-null: legs come from here and `legs` / `trees` are not used.
+  LegProvider* provider = nullptr;
 };
-
-//! How a leg's path was obtained.
-enum class LegSource { kPlanned, kReused };
 
 struct Leg {
   std::string from_id, to_id;  //!< object ids ("door" for the start)
@@ -110,8 +147,9 @@ struct Leg {
 struct TourStats {
   int legs_planned = 0;   //!< RRT queries run
   int legs_failed = 0;    //!< of which found nothing
-  int legs_reused = 0;    //!< paths taken from the LegCache
-  int legs_rejected = 0;  //!< LegCache paths invalid in the current layout
+  int legs_reused = 0;    //!< paths taken from the LegCache / provider's database
+  int legs_repaired = 0;  //!< stored paths repaired by the provider (also in legs_planned)
+  int legs_rejected = 0;  //!< stored paths invalid in the current layout
   int backtracks = 0;     //!< returns to an earlier leg
   int depth = 0;          //!< most legs joined at once (= sequence size − 1 when found)
   bool capped = false;    //!< max_leg_plans was reached

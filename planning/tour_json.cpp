@@ -50,7 +50,7 @@ json tour_object(const Tour& tour, std::optional<double> likelihood) {
                     {"length", leg.path.length()},
                     {"segments", segments_json(leg.path)},
                     {"waypoints", waypoints_json(leg.waypoints)},
-                    {"reused", leg.source == LegSource::kReused},
+                    {"reused", leg.source != LegSource::kPlanned},
                     {"iterations", leg.stats.iterations}});
   }
   t["legs"] = std::move(legs);
@@ -58,6 +58,7 @@ json tour_object(const Tour& tour, std::optional<double> likelihood) {
   t["stats"] = {{"legs_planned", tour.stats.legs_planned},
                 {"legs_failed", tour.stats.legs_failed},
                 {"legs_reused", tour.stats.legs_reused},
+                {"legs_repaired", tour.stats.legs_repaired},
                 {"legs_rejected", tour.stats.legs_rejected},
                 {"backtracks", tour.stats.backtracks},
                 {"capped", tour.stats.capped},

@@ -1,0 +1,515 @@
+// The proposed planner (paper §V); see reuse.h.
+
+#include "planning/reuse.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include "geometry/error.h"
+#include "planning/path_ops.h"
+
+namespace hrs::planning {
+
+namespace {
+
+double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+std::uint64_t splitmix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+struct Box {
+  double xmin, ymin, xmax, ymax;
+};
+
+Box room_box(const geometry::Scene& scene) {
+  Box b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const geometry::Vec2& v : scene.room.polygon) {
+    b.xmin = std::min(b.xmin, v.x);
+    b.ymin = std::min(b.ymin, v.y);
+    b.xmax = std::max(b.xmax, v.x);
+    b.ymax = std::max(b.ymax, v.y);
+  }
+  return b;
+}
+
+void add_stats(LegStats& into, const LegStats& more) {
+  into.iterations += more.iterations;
+  into.collision_checks += more.collision_checks;
+  into.tree_nodes = std::max(into.tree_nodes, more.tree_nodes);
+  into.time_ms += more.time_ms;
+}
+
+}  // namespace
+
+// ---- ReuseOptions -----------------------------------------------------------
+
+ReuseOptions ReuseOptions::none() {
+  ReuseOptions o;
+  o.samples = o.steering = o.paths = o.trees = false;
+  return o;
+}
+
+ReuseOptions ReuseOptions::parse(std::string_view list) {
+  if (list == "all") return ReuseOptions{};
+  ReuseOptions o = none();
+  if (list == "none") return o;
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const std::size_t end = std::min(list.find(',', start), list.size());
+    const std::string_view name = list.substr(start, end - start);
+    if (name == "samples") {
+      o.samples = true;
+    } else if (name == "steering") {
+      o.steering = true;
+    } else if (name == "paths") {
+      o.paths = true;
+    } else if (name == "trees") {
+      o.trees = true;
+    } else {
+      throw InputError("--reuse: unknown technique '" + std::string(name) +
+                       "' (all, none, or a comma list of samples, steering, paths, trees)");
+    }
+    start = end + 1;
+  }
+  return o;
+}
+
+std::string ReuseOptions::names() const {
+  std::string out;
+  auto add = [&](bool on, const char* name) {
+    if (!on) return;
+    if (!out.empty()) out += ',';
+    out += name;
+  };
+  add(samples, "samples");
+  add(steering, "steering");
+  add(paths, "paths");
+  add(trees, "trees");
+  return out.empty() ? "none" : out;
+}
+
+// ---- §V-A -------------------------------------------------------------------
+
+DecompositionSampler::DecompositionSampler(const rs::Decomposition& decomposition,
+                                           const geometry::Scene& scene)
+    : decomposition_(&decomposition) {
+  const Box b = room_box(scene);
+  cx_ = 0.5 * (b.xmin + b.xmax);
+  cy_ = 0.5 * (b.ymin + b.ymax);
+  // The decomposition samples x in [−W, W] for a room of width W (doubled
+  // room, start at its centre): halve to land in the room's box.
+  const auto& o = decomposition.options();
+  sx_ = o.room_width > 0.0 ? 0.5 * (b.xmax - b.xmin) / o.room_width : 0.0;
+  sy_ = o.room_depth > 0.0 ? 0.5 * (b.ymax - b.ymin) / o.room_depth : 0.0;
+}
+
+Pose2 DecompositionSampler::sample(std::mt19937_64& rng) {
+  const auto& samples = decomposition_->samples();
+  const std::size_t n = samples.size();
+  const std::size_t i =
+      std::min(n - 1, static_cast<std::size_t>(unit(rng) * static_cast<double>(n)));
+  const Pose2& p = samples[i].pose;
+  return {cx_ + sx_ * p.x, cy_ + sy_ * p.y, p.theta};
+}
+
+double DecompositionSteering::distance(const Pose2& from, const Pose2& to, double radius) {
+  const double d = decomposition_->predicted_length(from, to);
+  return std::isfinite(d) ? d : rs::shortest_length(from, to, radius);
+}
+
+rs::Path DecompositionSteering::path(const Pose2& from, const Pose2& to, double radius) {
+  if (auto p = decomposition_->predicted_path(from, to)) return *std::move(p);
+  return rs::shortest_path(from, to, radius);
+}
+
+// ---- §V-B -------------------------------------------------------------------
+
+Pose2 relative_pose(const Pose2& a, const Pose2& b) {
+  const double c = std::cos(a.theta), s = std::sin(a.theta);
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return {c * dx + s * dy, -s * dx + c * dy, geometry::wrap_angle(b.theta - a.theta)};
+}
+
+double pose_gap(const Pose2& a, const Pose2& b) {
+  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(geometry::wrap_angle(a.theta - b.theta));
+}
+
+const PathDatabase::Entry* PathDatabase::find(const LegKey& key) const {
+  const auto it = entries_.find(key);
+  return it == entries_.end() ? nullptr : &it->second;
+}
+
+std::optional<rs::Path> PathDatabase::transformed(const LegKey& key, const Pose2& from,
+                                                  const Pose2& to) const {
+  const Entry* e = find(key);
+  if (!e) return std::nullopt;
+  if (pose_gap(relative_pose(e->from, e->to), relative_pose(from, to)) > kRigidTolerance)
+    return std::nullopt;
+  return e->path;  // segments are intrinsic: driven from `from` they end at `to`
+}
+
+void PathDatabase::put(const LegKey& key, const Pose2& from, const Pose2& to,
+                       const rs::Path& path) {
+  entries_[key] = Entry{path, from, to};
+}
+
+bool PathDatabase::lookup(const LegKey& key, const Pose2& from, const Pose2& to, rs::Path& out) {
+  auto p = transformed(key, from, to);
+  if (!p) return false;
+  out = *std::move(p);
+  return true;
+}
+
+void PathDatabase::store(const LegKey& key, const Pose2& from, const Pose2& to,
+                         const rs::Path& path) {
+  put(key, from, to, path);
+}
+
+// ---- §V-C -------------------------------------------------------------------
+
+std::optional<RrtTree> TreeStore::usable(const RootKey& root, const Pose2& from,
+                                         std::uint64_t* checks) const {
+  const auto it = trees_.find(root);
+  if (it == trees_.end() || it->second.nodes.empty()) return std::nullopt;
+  const RrtTree& stored = it->second;
+  if (static_cast<int>(stored.nodes.size()) > options_.tree_max_nodes) return std::nullopt;
+  if (pose_gap(stored.root(), from) > options_.tree_root_tolerance) return std::nullopt;
+
+  // Move the tree rigidly with its root (nodes re-driven along their edges),
+  // then keep the nodes whose whole chain of edges is still free. Parents
+  // precede their children, so one forward pass suffices.
+  MotionValidator validator(*cspace_, radius_);
+  const std::size_t n = stored.nodes.size();
+  std::vector<Pose2> pose(n);
+  std::vector<std::int32_t> remap(n, -1);
+  RrtTree out;
+  out.nodes.reserve(n);
+  pose[0] = from;
+  remap[0] = 0;
+  out.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
+  for (std::size_t i = 1; i < n; ++i) {
+    const RrtTree::Node& node = stored.nodes[i];
+    const std::int32_t parent = remap[node.parent];
+    if (parent < 0) continue;
+    const Pose2 start = pose[node.parent];
+    if (!validator.path_free(start, node.edge)) continue;
+    pose[i] = final_pose(start, node.edge);
+    remap[i] = static_cast<std::int32_t>(out.nodes.size());
+    out.nodes.push_back({pose[i], parent, node.edge, node.cost});
+  }
+  if (checks) *checks += validator.checks();
+  return out;
+}
+
+void TreeStore::put(const RootKey& root, RrtTree tree) {
+  if (tree.nodes.empty() || static_cast<int>(tree.nodes.size()) > options_.tree_max_nodes) {
+    trees_.erase(root);
+    return;
+  }
+  trees_[root] = std::move(tree);
+}
+
+RrtTree* TreeStore::tree_for(const LegKey& key, const Pose2& from) {
+  const RootKey root{key.from_object, key.from_slot};
+  std::optional<RrtTree> tree = usable(root, from);
+  if (!tree) {
+    tree.emplace();
+    tree->nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
+  }
+  RrtTree& slot = trees_[root];
+  slot = *std::move(tree);
+  return &slot;
+}
+
+// ---- ReusePlanner ---------------------------------------------------------------
+
+ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
+  legs_database += o.legs_database;
+  legs_repaired += o.legs_repaired;
+  legs_planned += o.legs_planned;
+  legs_failed += o.legs_failed;
+  legs_rejected += o.legs_rejected;
+  trees_reused += o.trees_reused;
+  leg_requests += o.leg_requests;
+  for (const auto& [k, v] : o.rrt_iterations) rrt_iterations[k] += v;
+  return *this;
+}
+
+//! The shared outcome of one key in one iteration.
+struct ReusePlanner::Slot {
+  std::mutex mutex;
+  Pose2 from, to;
+  bool database_done = false;  //!< stage A ran
+  LegOutcome database;
+  bool planned_done = false;  //!< stage B ran
+  LegOutcome planned;
+  int fresh_iterations = -1;  //!< RRT iterations of the fresh plan (−1: none)
+  bool tree_reused = false;
+  std::optional<RrtTree> grown;  //!< the fresh plan's tree (tree reuse)
+};
+
+ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                           const TourOptions& tour, const ReuseOptions& options, std::uint64_t seed)
+    : cspace_(&cspace),
+      tour_(tour),
+      options_(options),
+      radius_(scene.wheelchair.turning_radius),
+      trees_(cspace, scene.wheelchair.turning_radius, options) {
+  if (options_.samples || options_.steering) {
+    const Box b = room_box(scene);
+    rs::DecompositionOptions d;
+    d.radius = radius_;
+    d.room_width = b.xmax - b.xmin;
+    d.room_depth = b.ymax - b.ymin;
+    d.initial_samples = options_.decomposition_initial;
+    d.stop_after = options_.decomposition_stop;
+    std::mt19937_64 rng(splitmix(seed ^ 0x5eed'dec0'0000'0000ULL));
+    decomposition_ = std::make_unique<rs::Decomposition>(d, rng);
+    if (options_.samples) sampler_ = std::make_unique<DecompositionSampler>(*decomposition_, scene);
+    if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
+  }
+}
+
+ReusePlanner::~ReusePlanner() = default;
+
+TourHooks ReusePlanner::hooks() {
+  TourHooks h;
+  h.provider = this;
+  h.planner.sampler = sampler_.get();
+  h.planner.steering = steering_.get();
+  return h;
+}
+
+void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
+  iteration_seed_ = iteration_seed;
+  slots_.clear();
+  leg_requests_ = 0;
+}
+
+LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from,
+                                       const Pose2& to) const {
+  LegOutcome out;
+  out.source = LegSource::kReused;
+  if (!database_.find(key)) return out;
+  out.rejected = true;
+  std::optional<rs::Path> path = database_.transformed(key, from, to);
+  if (!path) return out;  // the ends moved apart: repair or plan
+  MotionValidator validator(*cspace_, radius_);
+  const bool valid = std::abs(path->radius - radius_) <= 1e-12 &&
+                     pose_gap(final_pose(from, *path), to) <= tour_.planner.goal_tolerance &&
+                     validator.path_free(from, *path);
+  out.stats.collision_checks = validator.checks();
+  if (!valid) return out;
+  out.rejected = false;
+  out.found = true;
+  out.path = *std::move(path);
+  return out;
+}
+
+std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& from,
+                                               const Pose2& to, std::uint64_t seed,
+                                               LegPlanner& planner) const {
+  const PathDatabase::Entry* e = database_.find(key);
+  if (!e) return std::nullopt;
+  // Keep the part of the path attached to the end that did not move: driven
+  // from `from` when the from-pose is where it was (or both moved), else the
+  // reversed path driven from `to`. Then grow an RRT from that chain.
+  const bool from_moved = pose_gap(from, e->from) > PathDatabase::kRigidTolerance;
+  const bool to_moved = pose_gap(to, e->to) > PathDatabase::kRigidTolerance;
+  const bool reverse = from_moved && !to_moved;
+  const Pose2 start = reverse ? to : from;
+  const Pose2 goal = reverse ? from : to;
+  const rs::Path base = reverse ? rs::reversed(e->path) : e->path;
+
+  MotionValidator validator(*cspace_, radius_);
+  RrtTree chain;
+  chain.nodes.push_back({start, -1, rs::Path{{}, radius_}, 0.0});
+  const double step = tour_.planner.step_length;
+  Pose2 p = start;
+  double cost = 0.0;
+  bool blocked = false;
+  for (const rs::Segment& seg : base.segments) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / step - 1e-9)));
+    const rs::Segment part{seg.steer, seg.gear, seg.length / pieces};
+    for (int i = 0; i < pieces && !blocked; ++i) {
+      if (!validator.segment_free(p, part)) {
+        blocked = true;
+        break;
+      }
+      p = rs::advance(p, part, radius_);
+      cost += part.length;
+      chain.nodes.push_back(
+          {p, static_cast<std::int32_t>(chain.nodes.size() - 1), rs::Path{{part}, radius_}, cost});
+    }
+    if (blocked) break;
+  }
+  LegOutcome out;
+  out.planned = true;
+  out.source = LegSource::kRepaired;
+  out.stats.collision_checks = validator.checks();
+  if (chain.nodes.size() < 2) return std::nullopt;
+  LegResult r = planner.plan(start, goal, seed, chain, options_.repair_iterations);
+  add_stats(out.stats, r.stats);
+  if (!r.found) {
+    out.found = false;
+    return out;  // counted, and the caller plans fresh
+  }
+  rs::Path path = reverse ? rs::reversed(r.path) : std::move(r.path);
+  if (reverse) {
+    // The same curve driven the other way: confirm its end and its freedom.
+    MotionValidator again(*cspace_, radius_);
+    const bool ok = pose_gap(final_pose(from, path), to) <= tour_.planner.goal_tolerance &&
+                    again.path_free(from, path);
+    out.stats.collision_checks += again.checks();
+    if (!ok) return out;
+  }
+  out.found = true;
+  out.path = std::move(path);
+  return out;
+}
+
+LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Pose2& to,
+                                  std::uint64_t seed, LegPlanner& planner, Slot& slot) const {
+  LegOutcome out;
+  out.planned = true;
+  out.source = LegSource::kPlanned;
+  if (options_.paths && options_.repair) {
+    if (std::optional<LegOutcome> r = repair(key, from, to, seed, planner)) {
+      if (r->found) return *std::move(r);
+      add_stats(out.stats, r->stats);
+    }
+  }
+  RrtTree tree;
+  if (options_.trees) {
+    std::uint64_t checks = 0;
+    if (std::optional<RrtTree> kept =
+            trees_.usable({key.from_object, key.from_slot}, from, &checks)) {
+      tree = *std::move(kept);
+      slot.tree_reused = true;
+    }
+    out.stats.collision_checks += checks;
+  }
+  LegResult r = planner.plan(from, to, seed, tree);
+  add_stats(out.stats, r.stats);
+  slot.fresh_iterations = r.stats.iterations;
+  if (options_.trees) slot.grown = std::move(tree);
+  out.found = r.found;
+  if (r.found) out.path = std::move(r.path);
+  return out;
+}
+
+LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pose2& to,
+                                 std::uint64_t tour_seed, bool may_plan, LegPlanner& planner) {
+  if (!options_.any()) {
+    // The baseline exactly: a fresh tree and the tour's own leg seed.
+    LegOutcome out;
+    out.planned = true;
+    if (!may_plan) return out;
+    LegResult r = planner.plan(from, to, leg_seed(tour_seed, key));
+    out.found = r.found;
+    out.path = std::move(r.path);
+    out.stats = r.stats;
+    return out;
+  }
+  Slot* slot = nullptr;
+  {
+    std::lock_guard lock(mutex_);
+    ++leg_requests_;
+    auto& owned = slots_[key];
+    if (!owned) {
+      owned = std::make_unique<Slot>();
+      owned->from = from;
+      owned->to = to;
+    }
+    slot = owned.get();
+  }
+  const std::uint64_t seed = leg_seed(iteration_seed_, key);
+  if (options_.paths) {
+    // Compute once per key and iteration; tours needing the same leg wait.
+    std::lock_guard lock(slot->mutex);
+    if (!slot->database_done) {
+      slot->database = from_database(key, from, to);
+      slot->database_done = true;
+    }
+    if (slot->database.found) return slot->database;
+    if (!may_plan) {
+      LegOutcome out;
+      out.planned = true;
+      out.rejected = slot->database.rejected;
+      return out;
+    }
+    if (!slot->planned_done) {
+      slot->planned = plan_leg(key, from, to, seed, planner, *slot);
+      slot->planned.rejected = slot->database.rejected;
+      slot->planned.stats.collision_checks += slot->database.stats.collision_checks;
+      slot->planned_done = true;
+    }
+    return slot->planned;
+  }
+  // No sharing (path reuse off): every tour plans; the outcome is the same
+  // pure function, so the first copy recorded is as good as any.
+  LegOutcome out;
+  out.planned = true;
+  if (!may_plan) return out;
+  Slot local;
+  out = plan_leg(key, from, to, seed, planner, local);
+  std::lock_guard lock(slot->mutex);
+  if (!slot->planned_done) {
+    slot->planned = out;
+    slot->planned_done = true;
+    slot->fresh_iterations = local.fresh_iterations;
+    slot->tree_reused = local.tree_reused;
+    slot->grown = std::move(local.grown);
+  }
+  return out;
+}
+
+ReuseCounters ReusePlanner::end_iteration() {
+  ReuseCounters c;
+  c.leg_requests = leg_requests_;
+  std::set<RootKey> roots;
+  for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
+    if (slot->database.rejected) ++c.legs_rejected;
+    const LegOutcome* outcome = nullptr;
+    if (slot->database_done && slot->database.found) {
+      outcome = &slot->database;
+      ++c.legs_database;
+    } else if (slot->planned_done) {
+      outcome = &slot->planned;
+      if (outcome->found && outcome->source == LegSource::kRepaired) {
+        ++c.legs_repaired;
+      } else if (outcome->found) {
+        ++c.legs_planned;
+        ++c.rrt_iterations[slot->fresh_iterations];
+      } else {
+        ++c.legs_failed;
+      }
+    }
+    if (slot->tree_reused) ++c.trees_reused;
+    if (options_.paths && outcome) {
+      if (outcome->found) {
+        database_.put(key, slot->from, slot->to, outcome->path);
+      } else {
+        database_.erase(key);  // not valid here and not repairable
+      }
+    }
+    if (slot->grown) {
+      const RootKey root{key.from_object, key.from_slot};
+      if (roots.insert(root).second) trees_.put(root, *std::move(slot->grown));
+    }
+  }
+  slots_.clear();
+  leg_requests_ = 0;
+  totals_ += c;
+  return c;
+}
+
+}  // namespace hrs::planning

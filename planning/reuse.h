@@ -1,0 +1,235 @@
+#pragma once
+// The proposed planner (paper §V): reuse across the hundreds of similar
+// planning problems of one design run, each technique switchable alone.
+// §V-A: RRT samples drawn from the RS-decomposition's configurations
+// (DecompositionSampler) and RS look-ups through its predicted words
+// (DecompositionSteering). §V-B: a path database keyed by LegKey whose paths
+// live in the frames of the goal poses they join, so a path between two
+// objects that moved rigidly together is transformed exactly, and a path
+// with one moved end is repaired (its valid part kept, the gap re-planned).
+// §V-C: RRT trees rooted at goal poses, kept while their root barely moves,
+// pruned of edges a move invalidated, rebuilt past 30 nodes.
+//
+// Determinism (DESIGN.md: the same seed gives the same bytes for any thread
+// count): ReusePlanner serves legs through TourHooks::provider. Between
+// begin_iteration() and end_iteration() the database and the tree store are
+// read-only snapshots; every leg's outcome is a pure function of (snapshot,
+// current layout, iteration seed, LegKey), computed once per key and shared
+// by the tours of the iteration (a per-key lock); end_iteration() merges the
+// outcomes into the stores in key order. Leg seeds depend on the iteration
+// seed and the key, never on the tour.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/cspace.h"
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "planning/motion_validator.h"
+#include "planning/rrt.h"
+#include "planning/tour.h"
+#include "rs/decomposition.h"
+
+namespace hrs::planning {
+
+//! Which §V techniques are on, and their parameters.
+struct ReuseOptions {
+  bool samples = true;   //!< §V-A: RRT samples from the RS-decomposition
+  bool steering = true;  //!< §V-A: RS look-ups through the decomposition (exact fallback)
+  bool paths = true;     //!< §V-B: path database, shared within and across iterations
+  bool trees = true;     //!< §V-C: RRT trees reused while their root barely moves
+  //! §V-B: a stored path whose ends moved apart is repaired (valid part kept,
+  //! gap re-planned) before a fresh plan is tried.
+  bool repair = true;
+  int repair_iterations = 30;  //!< RRT iterations allowed to close a repair's gap
+  //! §V-C: a tree is kept while its root moved at most this much (metres +
+  //! radians); the tree moves rigidly with its root and is then pruned.
+  double tree_root_tolerance = 0.1;
+  int tree_max_nodes = 30;           //!< §V-C: a tree past this many nodes is rebuilt (paper: 30)
+  int decomposition_initial = 1000;  //!< K of the decomposition (paper: 1000)
+  int decomposition_stop = 100;      //!< consecutive agreeing samples ending it (paper: 100)
+
+  //! True when at least one technique is on; all off is the baseline exactly.
+  bool any() const { return samples || steering || paths || trees; }
+  //! Every technique off.
+  static ReuseOptions none();
+  //! Parses "all", "none" or a comma list of samples, steering, paths, trees
+  //! (the ones listed are on); hrs::InputError otherwise.
+  static ReuseOptions parse(std::string_view list);
+  //! The comma list of the techniques on ("none" when none).
+  std::string names() const;
+};
+
+//! §V-A: RRT targets drawn uniformly from the decomposition's samples, mapped
+//! from its doubled room (centred on the start) onto the room's bounding box.
+class DecompositionSampler final : public SampleSource {
+ public:
+  DecompositionSampler(const rs::Decomposition& decomposition, const geometry::Scene& scene);
+  Pose2 sample(std::mt19937_64& rng) override;
+
+ private:
+  const rs::Decomposition* decomposition_;
+  double cx_, cy_, sx_, sy_;  //!< room centre and scale from the doubled room
+};
+
+//! §V-A: RS paths by the decomposition's predicted word; the exact shortest
+//! path when the predicted word cannot connect the poses. Thread-safe.
+class DecompositionSteering final : public Steering {
+ public:
+  explicit DecompositionSteering(const rs::Decomposition& decomposition)
+      : decomposition_(&decomposition) {}
+  double distance(const Pose2& from, const Pose2& to, double radius) override;
+  rs::Path path(const Pose2& from, const Pose2& to, double radius) override;
+
+ private:
+  const rs::Decomposition* decomposition_;
+};
+
+//! `b` in the frame of `a` (a's position at the origin, heading +x).
+Pose2 relative_pose(const Pose2& a, const Pose2& b);
+//! Distance (metres) plus absolute heading difference (radians).
+double pose_gap(const Pose2& a, const Pose2& b);
+
+//! §V-B: paths keyed by LegKey. A path is a list of RS segments driven from
+//! its start, so it lives in the frame of its from-pose; its to-pose is kept
+//! relative to that frame. When the current ends have the same relative pose
+//! (both objects moved rigidly together, or neither moved), the stored path
+//! driven from the new from-pose ends exactly at the new to-pose.
+class PathDatabase final : public LegCache {
+ public:
+  struct Entry {
+    rs::Path path;
+    Pose2 from, to;  //!< world poses of the ends when stored
+  };
+  //! Ends whose relative poses differ by at most this are "the same" (m + rad).
+  static constexpr double kRigidTolerance = 1e-9;
+
+  const Entry* find(const LegKey& key) const;
+  //! The stored path transformed to the ends `from`, `to` when they are
+  //! rigidly the same as the stored ones, else nullopt.
+  std::optional<rs::Path> transformed(const LegKey& key, const Pose2& from, const Pose2& to) const;
+  void put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path);
+  void erase(const LegKey& key) { entries_.erase(key); }
+  std::size_t size() const { return entries_.size(); }
+
+  // LegCache, for single-threaded use with a TourPlanner.
+  bool lookup(const LegKey& key, const Pose2& from, const Pose2& to, rs::Path& out) override;
+  void store(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path) override;
+  void reject(const LegKey& key) override { erase(key); }
+
+ private:
+  std::map<LegKey, Entry> entries_;
+};
+
+//! Where an RRT tree is rooted: a goal pose of an object (−1: the door).
+struct RootKey {
+  int object = -1;
+  int slot = 0;
+  friend auto operator<=>(const RootKey&, const RootKey&) = default;
+};
+
+//! §V-C: RRT trees by root. A tree is handed out only while its root moved
+//! at most `tree_root_tolerance`; it is moved rigidly onto the new root (its
+//! edges are RS segments, so node poses are re-driven from the root), every
+//! edge is re-checked continuously and invalid subtrees are dropped.
+class TreeStore final : public TreeCache {
+ public:
+  TreeStore(const geometry::CSpace& cspace, double radius, const ReuseOptions& options)
+      : cspace_(&cspace), radius_(radius), options_(options) {}
+
+  //! A pruned copy of the tree of `root` moved onto `from`, or nullopt when
+  //! there is none, its root moved too far, or it is too large. Counts the
+  //! edge checks into `checks`. Const: safe from parallel tours.
+  std::optional<RrtTree> usable(const RootKey& root, const Pose2& from,
+                                std::uint64_t* checks = nullptr) const;
+  //! Keeps `tree` for `root`, or forgets the root's tree when `tree` has
+  //! more than tree_max_nodes nodes (rebuilt next time).
+  void put(const RootKey& root, RrtTree tree);
+  std::size_t size() const { return trees_.size(); }
+
+  // TreeCache, for single-threaded use with a TourPlanner.
+  RrtTree* tree_for(const LegKey& key, const Pose2& from) override;
+
+ private:
+  const geometry::CSpace* cspace_;
+  double radius_;
+  ReuseOptions options_;
+  std::map<RootKey, RrtTree> trees_;
+};
+
+//! Counts over a design run (or one iteration). Deterministic: legs are
+//! counted once per key and iteration, from the pure outcomes.
+struct ReuseCounters {
+  std::uint64_t legs_database = 0;  //!< served from the database, transformed and validated
+  std::uint64_t legs_repaired = 0;  //!< stored path repaired (valid part kept, gap planned)
+  std::uint64_t legs_planned = 0;   //!< planned fresh and found
+  std::uint64_t legs_failed = 0;    //!< planned fresh, nothing found
+  std::uint64_t legs_rejected = 0;  //!< stored paths not valid as they were
+  std::uint64_t trees_reused = 0;   //!< fresh plans that grew a kept tree
+  std::uint64_t leg_requests = 0;   //!< leg look-ups by tours (shared legs counted per tour)
+  //! RRT iterations of the successful fresh plans: iterations → count (Fig. "rrt-it").
+  std::map<int, std::uint64_t> rrt_iterations;
+  ReuseCounters& operator+=(const ReuseCounters& other);
+};
+
+//! The proposed planner's leg service (a LegProvider) for one scene.
+class ReusePlanner final : public LegProvider {
+ public:
+  //! `cspace` is read at every resolve (the caller moves objects between
+  //! iterations); `seed` seeds the decomposition.
+  ReusePlanner(const geometry::Scene& scene, const geometry::CSpace& cspace,
+               const TourOptions& tour, const ReuseOptions& options, std::uint64_t seed);
+  ~ReusePlanner() override;
+
+  //! Hooks for the TourPlanners of this run: provider, sampler, steering.
+  TourHooks hooks();
+  //! Starts an iteration (a new layout): clears the shared legs; leg seeds
+  //! derive from `iteration_seed` and the key.
+  void begin_iteration(std::uint64_t iteration_seed);
+  //! Merges the iteration's outcomes into the database and the tree store in
+  //! key order and returns the iteration's counters (also added to totals()).
+  ReuseCounters end_iteration();
+
+  LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t tour_seed,
+                     bool may_plan, LegPlanner& planner) override;
+
+  const ReuseOptions& options() const { return options_; }
+  const ReuseCounters& totals() const { return totals_; }
+  const PathDatabase& database() const { return database_; }
+  const TreeStore& trees() const { return trees_; }
+  //! Null when neither samples nor steering is on.
+  const rs::Decomposition* decomposition() const { return decomposition_.get(); }
+
+ private:
+  struct Slot;
+  //! Stage A: the stored path, transformed and validated (no RRT).
+  LegOutcome from_database(const LegKey& key, const Pose2& from, const Pose2& to) const;
+  //! Stage B: repair, else a fresh plan (with a kept tree when on).
+  LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
+                      LegPlanner& planner, Slot& slot) const;
+  std::optional<LegOutcome> repair(const LegKey& key, const Pose2& from, const Pose2& to,
+                                   std::uint64_t seed, LegPlanner& planner) const;
+
+  const geometry::CSpace* cspace_;
+  TourOptions tour_;
+  ReuseOptions options_;
+  double radius_;
+  std::unique_ptr<rs::Decomposition> decomposition_;
+  std::unique_ptr<DecompositionSampler> sampler_;
+  std::unique_ptr<DecompositionSteering> steering_;
+  PathDatabase database_;
+  TreeStore trees_;
+  std::uint64_t iteration_seed_ = 0;
+  std::mutex mutex_;  //!< guards slots_ and leg_requests_
+  std::map<LegKey, std::unique_ptr<Slot>> slots_;
+  std::uint64_t leg_requests_ = 0;
+  ReuseCounters totals_;
+};
+
+}  // namespace hrs::planning
