@@ -161,7 +161,7 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
   }
   const double scale = 100.0;  // pixels per metre
   const Frame f{xmin, ymax, scale, 20.0, 40.0};
-  const double width = (xmax - xmin) * scale + 40.0, height = (ymax - ymin) * scale + 90.0;
+  const double width = (xmax - xmin) * scale + 40.0, height = (ymax - ymin) * scale + 105.0;
   std::ostringstream s;
   s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\""
     << num(height) << "\" viewBox=\"0 0 " << num(width) << " " << num(height)
@@ -225,7 +225,7 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
       << "\" fill=\"none\" stroke=\"#2a7\" stroke-width=\"1.5\" stroke-dasharray=\"3,2\"/>\n";
   }
   // Scale bar: 1 m.
-  const double by = height - 25.0;
+  const double by = height - 40.0;
   s << "<line x1=\"20\" y1=\"" << num(by) << "\" x2=\"" << num(20 + scale) << "\" y2=\"" << num(by)
     << "\" stroke=\"black\" stroke-width=\"3\"/>\n";
   s << "<text x=\"" << num(20 + scale + 8) << "\" y=\"" << num(by + 4)
@@ -233,7 +233,20 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
   const int found = result.final.tours_found, total = result.final.tours_total;
   s << "<text x=\"" << num(20 + scale + 50) << "\" y=\"" << num(by + 4) << "\" font-size=\"12\">"
     << "cost " << num(result.final.total()) << ", tours found " << found << "/" << total
-    << " (bold: most likely)</text>\n";
+    << "</text>\n";
+  if (!result.sequences.empty()) {
+    std::string seq;
+    for (const auto& id : result.sequences[0].nodes) {
+      if (!seq.empty()) seq += " \u2192 ";
+      seq += id;
+    }
+    const bool shown = !result.tours.empty() && result.tours[0].found;
+    char lik[32];
+    std::snprintf(lik, sizeof lik, "%.3f", result.sequences[0].likelihood);
+    s << "<text x=\"20\" y=\"" << num(by + 20) << "\" font-size=\"11\" fill=\""
+      << (shown ? "#d62728" : "#777") << "\">most likely tour" << (shown ? " (bold)" : "") << ": "
+      << escape(seq) << ", L = " << lik << (shown ? "" : " \u2014 not found") << "</text>\n";
+  }
   s << "</svg>\n";
   return s.str();
 }

@@ -1,0 +1,97 @@
+// `hrspace design` end to end: exit statuses (2 on bad input, 130 after
+// Ctrl-C with the best design so far written), --designs K with its contact
+// sheet, and no progress output when stderr is not a terminal.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <thread>
+
+namespace {
+
+namespace fs = std::filesystem;
+const std::string kBin = HRSPACE_BIN;
+const std::string kBedroom = std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json";
+
+int run(const std::string& args, std::string* err = nullptr) {
+  const std::string errfile = (fs::temp_directory_path() / "hrspace_cli_test.err").string();
+  const int status = std::system((kBin + " " + args + " >/dev/null 2>" + errfile).c_str());
+  if (err) {
+    std::ifstream in(errfile);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    *err = ss.str();
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(DesignCli, BadInputExitsTwoWithOneLine) {
+  const std::string out = (fs::temp_directory_path() / "hrspace_cli_bad").string();
+  std::string err;
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --planner fast", &err), 2);
+  EXPECT_NE(err.find("--planner"), std::string::npos);
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);  // one line
+  EXPECT_EQ(run("design " + kBedroom), 2);                 // no --out
+  EXPECT_EQ(run("design /nonexistent.json --out " + out), 2);
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --iterations x"), 2);
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --designs 0"), 2);
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --bogus 1"), 2);
+  EXPECT_EQ(run("design --help"), 0);
+}
+
+TEST(DesignCli, SeveralDesignsGoToNumberedDirectoriesWithAContactSheet) {
+  const fs::path out = fs::temp_directory_path() / "hrspace_cli_multi";
+  fs::remove_all(out);
+  std::string err;
+  ASSERT_EQ(
+      run("design " + kBedroom + " --out " + out.string() + " --designs 2 --seed 5 --iterations 3",
+          &err),
+      0);
+  EXPECT_EQ(err, "");  // stderr is a file, not a terminal: no progress bar
+  for (const char* d : {"1", "2"})
+    for (const char* f : {"layout.json", "tours.json", "design.svg", "report.json"})
+      EXPECT_TRUE(fs::exists(out / d / f)) << d << "/" << f;
+  EXPECT_TRUE(fs::exists(out / "contact_sheet.svg"));
+  std::ifstream r2(out / "2" / "report.json");
+  const auto report = nlohmann::json::parse(r2);
+  EXPECT_EQ(report["seed"], 6);
+  EXPECT_EQ(report["iterations_run"], 3);
+}
+
+TEST(DesignCli, CtrlCWritesTheBestDesignSoFarAndExits130) {
+  const fs::path out = fs::temp_directory_path() / "hrspace_cli_sigint";
+  fs::remove_all(out);
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string o = out.string();
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(kBin.c_str(), kBin.c_str(), "design", kBedroom.c_str(), "--out", o.c_str(),
+          "--iterations", "100000", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(2500));
+  kill(pid, SIGINT);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  std::ifstream in(out / "report.json");
+  ASSERT_TRUE(in.good());
+  const auto report = nlohmann::json::parse(in);
+  EXPECT_TRUE(report["stopped"].get<bool>());
+  EXPECT_LT(report["iterations_run"].get<int>(), 100000);
+  EXPECT_TRUE(fs::exists(out / "layout.json"));
+  EXPECT_TRUE(fs::exists(out / "design.svg"));
+}
+
+}  // namespace
