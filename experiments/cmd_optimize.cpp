@@ -20,6 +20,7 @@
 #include "geometry/scene.h"
 #include "optimize/design.h"
 #include "optimize/design_io.h"
+#include "planning/reuse.h"
 
 namespace hrs::cli {
 
@@ -32,7 +33,7 @@ extern "C" void on_sigint(int) { g_interrupted.store(true); }
 
 constexpr const char* kDesignUsage =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
-    "                     [--planner baseline|proposed]\n\n"
+    "                     [--planner baseline|proposed] [--reuse LIST]\n\n"
     "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
     "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
     "Writes DIR/layout.json (a scene file), DIR/tours.json, DIR/design.svg, DIR/report.json.\n"
@@ -41,7 +42,15 @@ constexpr const char* kDesignUsage =
     "  --iterations N  annealing iterations (default 700)\n"
     "  --designs K     number of designs (default 1)\n"
     "  --threads T     tour-planning threads (default: all cores); results do not depend on it\n"
-    "  --planner P     baseline (default); proposed is not available yet\n"
+    "  --planner P     baseline (default: RRT per leg, §III-B) or proposed (reuse, §V)\n"
+    "  --reuse LIST    techniques of the proposed planner, for ablations: all (default),\n"
+    "                  none (= baseline exactly), or a comma list of\n"
+    "                    samples   RRT samples from the RS-decomposition (§V-A)\n"
+    "                    steering  RS look-ups through the decomposition (§V-A)\n"
+    "                    paths     path database, within and across iterations (§V-B)\n"
+    "                    trees     RRT trees kept while their root barely moves (§V-C)\n"
+    "                    failures  a failed leg is not re-planned while no object moved\n"
+    "                              within reach of its RRT's nodes (beyond the paper)\n"
     "Ctrl-C stops after the current iteration, writes the best design so far, exits 130.\n";
 
 std::string format_eta(double seconds) {
@@ -54,7 +63,7 @@ std::string format_eta(double seconds) {
 }  // namespace
 
 int cmd_design(const Argv& argv) {
-  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner"});
+  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsage;
     return 0;
@@ -63,11 +72,11 @@ int cmd_design(const Argv& argv) {
   const auto out = args.get("out");
   if (!out) throw InputError("--out DIR is required (see --help)");
   const std::string planner = args.get_or("planner", "baseline");
-  if (planner == "proposed")
-    throw InputError(
-        "--planner proposed: the reuse planner (§V) is not available yet; use --planner baseline");
-  if (planner != "baseline")
+  if (planner != "baseline" && planner != "proposed")
     throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
+  if (args.get("reuse") && planner != "proposed")
+    throw InputError("--reuse needs --planner proposed");
+  const planning::ReuseOptions reuse = planning::ReuseOptions::parse(args.get_or("reuse", "all"));
   const long seed = args.integer("seed", 1, 0, 1L << 53);
   const long iterations = args.integer("iterations", 700, 0, 100000000);
   const long designs = args.integer("designs", 1, 1, 1000);
@@ -92,6 +101,8 @@ int cmd_design(const Argv& argv) {
     options.seed = static_cast<std::uint64_t>(seed + d);
     options.iterations = static_cast<int>(iterations);
     options.threads = static_cast<int>(threads);
+    options.proposed = planner == "proposed";
+    options.reuse = reuse;
     const auto t0 = std::chrono::steady_clock::now();
     auto progress = [&](const optimize::DesignStep& step) {
       if (!tty) return;

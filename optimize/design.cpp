@@ -84,10 +84,15 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
 
   geometry::Scene work = scene;  // poses follow the annealer's current layout
   geometry::CSpace cspace(work, options.cspace);
+  std::unique_ptr<planning::ReusePlanner> reuse;
+  if (options.proposed)
+    reuse = std::make_unique<planning::ReusePlanner>(work, cspace, options.tour, options.reuse,
+                                                     options.seed);
+  const planning::TourHooks hooks = reuse ? reuse->hooks() : planning::TourHooks{};
   std::vector<std::unique_ptr<planning::TourPlanner>> planners;
   for (int k = 0; k < m; ++k)
-    planners.push_back(std::make_unique<planning::TourPlanner>(work, cspace, options.tour,
-                                                               tour_seed(options.seed, 0, k)));
+    planners.push_back(std::make_unique<planning::TourPlanner>(
+        work, cspace, options.tour, tour_seed(options.seed, 0, k), hooks));
   ThreadPool pool(options.threads);
   result.threads = pool.size();
 
@@ -104,11 +109,14 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
   double planning_ms = 0.0;
   auto plan_all = [&] {
     const auto p0 = Clock::now();
+    // The proposed planner's legs derive from (seed, iteration), not the tour.
+    if (reuse) reuse->begin_iteration(tour_seed(options.seed, iteration, m));
     pool.run(m, [&](int k) {
       planners[k]->set_seed(tour_seed(options.seed, iteration, k));
       tours[k] = planners[k]->plan(result.sequences[k].nodes);
       invalidated[k] = recheck_tour(cspace, scene.wheelchair.turning_radius, tours[k]) ? 0 : 1;
     });
+    if (reuse) reuse->end_iteration();
     for (int k = 0; k < m; ++k) result.tours_invalidated += invalidated[k];
     planning_ms = 1e3 * seconds_since(p0);
     result.time_planning_s += planning_ms / 1e3;
@@ -209,6 +217,11 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
   result.valid_proposals = r.valid_proposals;
   result.accepted = r.accepted;
   result.stopped = r.stopped;
+  result.proposed = options.proposed;
+  if (reuse) {
+    result.reuse = options.reuse.names();
+    result.counters = reuse->totals();
+  }
   result.time_total_s = seconds_since(t0);
   return result;
 }

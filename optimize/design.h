@@ -14,6 +14,10 @@
 // Metropolis rule decides; a rejected move is undone in the C-space. Every
 // found tour is re-certified (recheck_tour) before it counts.
 //
+// With the proposed planner (§V) one ReusePlanner serves the legs of all M
+// tours: each plan_all() is one of its iterations (begin/end), seeded from
+// (seed, iteration), so the outputs stay identical for any number of threads.
+//
 // The initial temperature is a fraction of the initial cost (cost units are
 // metres, radians and m², so a fixed temperature would not fit every scene).
 
@@ -28,6 +32,7 @@
 #include "optimize/annealer.h"
 #include "optimize/costs.h"
 #include "optimize/sequences.h"
+#include "planning/reuse.h"
 #include "planning/tour.h"
 
 namespace hrs::optimize {
@@ -41,6 +46,9 @@ struct DesignOptions {
   AnnealOptions anneal;           //!< moves; its temperatures and iterations are set from above
   planning::TourOptions tour;     //!< the tour planner (baseline)
   geometry::CSpaceOptions cspace;
+  //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
+  bool proposed = false;
+  planning::ReuseOptions reuse;  //!< its techniques (all on by default)
 };
 
 //! One iteration of a design run (report.json "trace").
@@ -70,6 +78,9 @@ struct DesignResult {
   //! layout are toured (the cost does not depend on the tours).
   bool planned_every_iteration = true;
   std::vector<DesignStep> trace;
+  bool proposed = false;             //!< planned by the proposed planner
+  std::string reuse;                 //!< its techniques ("none" … "samples,steering,paths,trees")
+  planning::ReuseCounters counters;  //!< its leg counts and RRT-iterations histogram
 };
 
 //! Why a layout is not valid, or "" when it is: every object inside the room,

@@ -149,6 +149,29 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
       {"temperature", {{"start", result.t_start}, {"end", result.t_end}}},
       {"sequences", seqs},
       {"trace", trace}};
+  if (result.proposed) {
+    // Paper §V: where the legs came from (each key counted once per
+    // iteration) and the RRT iterations of the fresh plans (Fig. "rrt-it").
+    const auto& c = result.counters;
+    json histogram = json::array();
+    for (const auto& [iterations, count] : c.rrt_iterations)
+      histogram.push_back({{"iterations", iterations}, {"legs", count}});
+    r["reuse"] = {{"techniques", result.reuse},
+                  {"legs_database", c.legs_database},
+                  {"legs_repaired", c.legs_repaired},
+                  {"legs_planned", c.legs_planned},
+                  {"legs_failed", c.legs_failed},
+                  {"legs_rejected", c.legs_rejected},
+                  {"trees_reused", c.trees_reused},
+                  {"failures_reused", c.failures_reused},
+                  {"leg_requests", c.leg_requests},
+                  {"rrt_iterations_histogram", histogram},
+                  {"time_ms",
+                   {{"database", c.database_ms},
+                    {"repaired", c.repaired_ms},
+                    {"planned", c.planned_ms},
+                    {"failed", c.failed_ms}}}};
+  }
   return r.dump(1) + "\n";
 }
 

@@ -53,7 +53,7 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 ReuseOptions ReuseOptions::none() {
   ReuseOptions o;
-  o.samples = o.steering = o.paths = o.trees = false;
+  o.samples = o.steering = o.paths = o.trees = o.failures = false;
   return o;
 }
 
@@ -73,9 +73,12 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
       o.paths = true;
     } else if (name == "trees") {
       o.trees = true;
+    } else if (name == "failures") {
+      o.failures = true;
     } else {
-      throw InputError("--reuse: unknown technique '" + std::string(name) +
-                       "' (all, none, or a comma list of samples, steering, paths, trees)");
+      throw InputError(
+          "--reuse: unknown technique '" + std::string(name) +
+          "' (all, none, or a comma list of samples, steering, paths, trees, failures)");
     }
     start = end + 1;
   }
@@ -93,6 +96,7 @@ std::string ReuseOptions::names() const {
   add(steering, "steering");
   add(paths, "paths");
   add(trees, "trees");
+  add(failures, "failures");
   return out.empty() ? "none" : out;
 }
 
@@ -238,8 +242,13 @@ ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
   legs_failed += o.legs_failed;
   legs_rejected += o.legs_rejected;
   trees_reused += o.trees_reused;
+  failures_reused += o.failures_reused;
   leg_requests += o.leg_requests;
   for (const auto& [k, v] : o.rrt_iterations) rrt_iterations[k] += v;
+  database_ms += o.database_ms;
+  repaired_ms += o.repaired_ms;
+  planned_ms += o.planned_ms;
+  failed_ms += o.failed_ms;
   return *this;
 }
 
@@ -253,7 +262,9 @@ struct ReusePlanner::Slot {
   LegOutcome planned;
   int fresh_iterations = -1;  //!< RRT iterations of the fresh plan (−1: none)
   bool tree_reused = false;
-  std::optional<RrtTree> grown;  //!< the fresh plan's tree (tree reuse)
+  bool failure_reused = false;
+  std::optional<RrtTree> grown;               //!< the fresh plan's tree (tree reuse)
+  std::vector<geometry::Vec2> failed_points;  //!< a failed fresh plan's nodes and goal
 };
 
 ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace& cspace,
@@ -262,7 +273,13 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       tour_(tour),
       options_(options),
       radius_(scene.wheelchair.turning_radius),
-      trees_(cspace, scene.wheelchair.turning_radius, options) {
+      trees_(cspace, scene.wheelchair.turning_radius, options),
+      objects_(scene.objects) {
+  // A query piece starts at a node and is at most step_length long; the
+  // chair (and the C-space's swept slice shape) stays within its half
+  // diagonal of its centre. 5 cm on top for the conservative rounding.
+  reach_ = tour.planner.step_length +
+           0.5 * std::hypot(scene.wheelchair.length, scene.wheelchair.width) + 0.05;
   if (options_.samples || options_.steering) {
     const Box b = room_box(scene);
     rs::DecompositionOptions d;
@@ -292,6 +309,7 @@ void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
   iteration_seed_ = iteration_seed;
   slots_.clear();
   leg_requests_ = 0;
+  unshared_ = {};
 }
 
 LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from,
@@ -302,11 +320,14 @@ LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from,
   out.rejected = true;
   std::optional<rs::Path> path = database_.transformed(key, from, to);
   if (!path) return out;  // the ends moved apart: repair or plan
+  const auto t0 = std::chrono::steady_clock::now();
   MotionValidator validator(*cspace_, radius_);
   const bool valid = std::abs(path->radius - radius_) <= 1e-12 &&
                      pose_gap(final_pose(from, *path), to) <= tour_.planner.goal_tolerance &&
                      validator.path_free(from, *path);
   out.stats.collision_checks = validator.checks();
+  out.stats.time_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   if (!valid) return out;
   out.rejected = false;
   out.found = true;
@@ -376,11 +397,39 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   return out;
 }
 
+bool ReusePlanner::failure_repeats(const LegKey& key, const Pose2& from, const Pose2& to) const {
+  const auto it = failures_.find(key);
+  if (it == failures_.end()) return false;
+  const Failure& f = it->second;
+  if (!(f.from == from) || !(f.to == to)) return false;
+  for (int i = 0; i < cspace_->object_count(); ++i) {
+    const Pose2& now = cspace_->object_pose(i);
+    if (now == f.layout[i]) continue;
+    for (const Pose2& pose : {f.layout[i], now}) {
+      geometry::Object o = objects_[i];
+      o.pose = pose;
+      double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+      for (const geometry::Vec2& v : geometry::world_footprint(o)) {
+        xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
+        xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
+      }
+      xmin -= reach_, ymin -= reach_, xmax += reach_, ymax += reach_;
+      for (const geometry::Vec2& p : f.points)
+        if (p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax) return false;
+    }
+  }
+  return true;
+}
+
 LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Pose2& to,
                                   std::uint64_t seed, LegPlanner& planner, Slot& slot) const {
   LegOutcome out;
   out.planned = true;
   out.source = LegSource::kPlanned;
+  if (options_.failures && failure_repeats(key, from, to)) {
+    slot.failure_reused = true;
+    return out;  // the recorded RRT run would repeat query for query
+  }
   if (options_.paths && options_.repair) {
     if (std::optional<LegOutcome> r = repair(key, from, to, seed, planner)) {
       if (r->found) return *std::move(r);
@@ -400,6 +449,11 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   LegResult r = planner.plan(from, to, seed, tree);
   add_stats(out.stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
+  if (!r.found && options_.failures) {
+    slot.failed_points.reserve(tree.nodes.size() + 1);
+    for (const RrtTree::Node& node : tree.nodes) slot.failed_points.push_back(node.pose.position());
+    slot.failed_points.push_back(to.position());
+  }
   if (options_.trees) slot.grown = std::move(tree);
   out.found = r.found;
   if (r.found) out.path = std::move(r.path);
@@ -417,6 +471,16 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     out.found = r.found;
     out.path = std::move(r.path);
     out.stats = r.stats;
+    // Every tour plans its own legs here: counted per request (the sums
+    // do not depend on the order).
+    std::lock_guard lock(mutex_);
+    ++unshared_.leg_requests;
+    if (r.found) {
+      ++unshared_.legs_planned;
+      ++unshared_.rrt_iterations[r.stats.iterations];
+    } else {
+      ++unshared_.legs_failed;
+    }
     return out;
   }
   Slot* slot = nullptr;
@@ -467,14 +531,17 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     slot->planned_done = true;
     slot->fresh_iterations = local.fresh_iterations;
     slot->tree_reused = local.tree_reused;
+    slot->failure_reused = local.failure_reused;
+    slot->failed_points = std::move(local.failed_points);
     slot->grown = std::move(local.grown);
   }
   return out;
 }
 
 ReuseCounters ReusePlanner::end_iteration() {
-  ReuseCounters c;
-  c.leg_requests = leg_requests_;
+  ReuseCounters c = std::move(unshared_);
+  unshared_ = {};
+  c.leg_requests += leg_requests_;
   std::set<RootKey> roots;
   for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
     if (slot->database.rejected) ++c.legs_rejected;
@@ -482,18 +549,33 @@ ReuseCounters ReusePlanner::end_iteration() {
     if (slot->database_done && slot->database.found) {
       outcome = &slot->database;
       ++c.legs_database;
+      c.database_ms += outcome->stats.time_ms;
     } else if (slot->planned_done) {
       outcome = &slot->planned;
       if (outcome->found && outcome->source == LegSource::kRepaired) {
         ++c.legs_repaired;
+        c.repaired_ms += outcome->stats.time_ms;
       } else if (outcome->found) {
         ++c.legs_planned;
         ++c.rrt_iterations[slot->fresh_iterations];
+        c.planned_ms += outcome->stats.time_ms;
       } else {
         ++c.legs_failed;
+        c.failed_ms += outcome->stats.time_ms;
       }
     }
     if (slot->tree_reused) ++c.trees_reused;
+    if (slot->failure_reused) ++c.failures_reused;
+    if (options_.failures && slot->planned_done) {
+      if (!slot->failed_points.empty()) {
+        Failure f{slot->from, slot->to, {}, std::move(slot->failed_points)};
+        for (int i = 0; i < cspace_->object_count(); ++i)
+          f.layout.push_back(cspace_->object_pose(i));
+        failures_[key] = std::move(f);
+      } else if (slot->planned.found) {
+        failures_.erase(key);
+      }
+    }
     if (options_.paths && outcome) {
       if (outcome->found) {
         database_.put(key, slot->from, slot->to, outcome->path);

@@ -44,6 +44,11 @@ struct ReuseOptions {
   bool steering = true;  //!< §V-A: RS look-ups through the decomposition (exact fallback)
   bool paths = true;     //!< §V-B: path database, shared within and across iterations
   bool trees = true;     //!< §V-C: RRT trees reused while their root barely moves
+  //! Beyond the paper: a leg whose RRT failed fails again, without planning,
+  //! while its ends are unchanged and every object moved since stayed out of
+  //! reach of every pose that RRT examined (then the same run would make the
+  //! same collision queries with the same answers: a proof, not a guess).
+  bool failures = true;
   //! §V-B: a stored path whose ends moved apart is repaired (valid part kept,
   //! gap re-planned) before a fresh plan is tried.
   bool repair = true;
@@ -56,11 +61,11 @@ struct ReuseOptions {
   int decomposition_stop = 100;      //!< consecutive agreeing samples ending it (paper: 100)
 
   //! True when at least one technique is on; all off is the baseline exactly.
-  bool any() const { return samples || steering || paths || trees; }
+  bool any() const { return samples || steering || paths || trees || failures; }
   //! Every technique off.
   static ReuseOptions none();
-  //! Parses "all", "none" or a comma list of samples, steering, paths, trees
-  //! (the ones listed are on); hrs::InputError otherwise.
+  //! Parses "all", "none" or a comma list of samples, steering, paths, trees,
+  //! failures (the ones listed are on); hrs::InputError otherwise.
   static ReuseOptions parse(std::string_view list);
   //! The comma list of the techniques on ("none" when none).
   std::string names() const;
@@ -166,15 +171,19 @@ class TreeStore final : public TreeCache {
 //! Counts over a design run (or one iteration). Deterministic: legs are
 //! counted once per key and iteration, from the pure outcomes.
 struct ReuseCounters {
-  std::uint64_t legs_database = 0;  //!< served from the database, transformed and validated
-  std::uint64_t legs_repaired = 0;  //!< stored path repaired (valid part kept, gap planned)
-  std::uint64_t legs_planned = 0;   //!< planned fresh and found
-  std::uint64_t legs_failed = 0;    //!< planned fresh, nothing found
-  std::uint64_t legs_rejected = 0;  //!< stored paths not valid as they were
-  std::uint64_t trees_reused = 0;   //!< fresh plans that grew a kept tree
-  std::uint64_t leg_requests = 0;   //!< leg look-ups by tours (shared legs counted per tour)
+  std::uint64_t legs_database = 0;    //!< served from the database, transformed and validated
+  std::uint64_t legs_repaired = 0;    //!< stored path repaired (valid part kept, gap planned)
+  std::uint64_t legs_planned = 0;     //!< planned fresh and found
+  std::uint64_t legs_failed = 0;      //!< planned fresh, nothing found
+  std::uint64_t legs_rejected = 0;    //!< stored paths not valid as they were
+  std::uint64_t trees_reused = 0;     //!< fresh plans that grew a kept tree
+  std::uint64_t failures_reused = 0;  //!< failed legs known to fail again (in legs_failed)
+  std::uint64_t leg_requests = 0;     //!< leg look-ups by tours (shared legs counted per tour)
   //! RRT iterations of the successful fresh plans: iterations → count (Fig. "rrt-it").
   std::map<int, std::uint64_t> rrt_iterations;
+  //! Work behind the outcomes (wall time, not reproducible): database
+  //! validations, repairs, fresh plans found, fresh plans failed.
+  double database_ms = 0.0, repaired_ms = 0.0, planned_ms = 0.0, failed_ms = 0.0;
   ReuseCounters& operator+=(const ReuseCounters& other);
 };
 
@@ -208,6 +217,15 @@ class ReusePlanner final : public LegProvider {
 
  private:
   struct Slot;
+  //! A failed RRT run: its ends, the layout it ran in, and every position
+  //! its collision queries were centred near (nodes and the goal).
+  struct Failure {
+    Pose2 from, to;
+    std::vector<Pose2> layout;
+    std::vector<geometry::Vec2> points;
+  };
+  //! True when the recorded failure of `key` provably repeats now.
+  bool failure_repeats(const LegKey& key, const Pose2& from, const Pose2& to) const;
   //! Stage A: the stored path, transformed and validated (no RRT).
   LegOutcome from_database(const LegKey& key, const Pose2& from, const Pose2& to) const;
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
@@ -225,10 +243,14 @@ class ReusePlanner final : public LegProvider {
   std::unique_ptr<DecompositionSteering> steering_;
   PathDatabase database_;
   TreeStore trees_;
+  std::map<LegKey, Failure> failures_;
+  std::vector<geometry::Object> objects_;  //!< footprints, for failure_repeats()
+  double reach_ = 0.0;                     //!< how far from a node a collision query can look
   std::uint64_t iteration_seed_ = 0;
   std::mutex mutex_;  //!< guards slots_ and leg_requests_
   std::map<LegKey, std::unique_ptr<Slot>> slots_;
   std::uint64_t leg_requests_ = 0;
+  ReuseCounters unshared_;  //!< all techniques off: legs counted per request
   ReuseCounters totals_;
 };
 
