@@ -1,0 +1,264 @@
+// The proposed planner's reuse (paper §V, planning/reuse.h): every path it
+// hands out is valid in the current layout by the exact CGAL reference
+// (random move sequences), stored paths follow objects that moved rigidly,
+// and the technique list parses.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "geometry/cspace.h"
+#include "geometry/error.h"
+#include "geometry/scene.h"
+#include "planning/goals.h"
+#include "planning/path_ops.h"
+#include "planning/reuse.h"
+#include "tests/planning/support.h"
+
+namespace hrs::planning {
+namespace {
+
+using geometry::Pose2;
+
+Pose2 apply(const Pose2& t, const Pose2& p) {
+  const geometry::Vec2 q = geometry::to_world(t, p.position());
+  return {q.x, q.y, geometry::wrap_angle(p.theta + t.theta)};
+}
+
+//! The whole scene (room, door, objects) moved by the rigid transform `t`.
+geometry::Scene moved_scene(geometry::Scene scene, const Pose2& t) {
+  for (auto& v : scene.room.polygon) v = geometry::to_world(t, v);
+  scene.room.size.reset();
+  scene.door.center = geometry::to_world(t, scene.door.center);
+  if (scene.door.start) scene.door.start = apply(t, *scene.door.start);
+  for (auto& o : scene.objects) o.pose = apply(t, o.pose);
+  return scene;
+}
+
+TEST(ReuseOptions, ParsesTechniqueLists) {
+  EXPECT_TRUE(ReuseOptions::parse("all").any());
+  EXPECT_FALSE(ReuseOptions::parse("none").any());
+  const ReuseOptions o = ReuseOptions::parse("paths,trees");
+  EXPECT_TRUE(o.paths && o.trees);
+  EXPECT_FALSE(o.samples || o.steering || o.failures);
+  EXPECT_EQ(o.names(), "paths,trees");
+  EXPECT_EQ(ReuseOptions::none().names(), "none");
+  EXPECT_THROW(ReuseOptions::parse("paths,bogus"), InputError);
+}
+
+TEST(DecompositionSampler, SamplesLieInTheRoomBox) {
+  const geometry::Scene scene =
+      geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/office.json");
+  rs::DecompositionOptions d;
+  d.radius = scene.wheelchair.turning_radius;
+  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+  for (auto v : scene.room.polygon) {
+    xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
+    xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
+  }
+  d.room_width = xmax - xmin;
+  d.room_depth = ymax - ymin;
+  std::mt19937_64 rng(3);
+  const rs::Decomposition decomposition(d, rng);
+  DecompositionSampler sampler(decomposition, scene);
+  double sx = 0, sy = 0;
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    const Pose2 p = sampler.sample(rng);
+    ASSERT_GE(p.x, xmin - 1e-9);
+    ASSERT_LE(p.x, xmax + 1e-9);
+    ASSERT_GE(p.y, ymin - 1e-9);
+    ASSERT_LE(p.y, ymax + 1e-9);
+    sx += p.x, sy += p.y;
+  }
+  // Spread over the room, not collapsed onto the start (the decomposition
+  // is centred on it): the mean lies near the box centre.
+  EXPECT_NEAR(sx / n, 0.5 * (xmin + xmax), 0.25 * (xmax - xmin));
+  EXPECT_NEAR(sy / n, 0.5 * (ymin + ymax), 0.25 * (ymax - ymin));
+}
+
+TEST(DecompositionSteering, PathsEndAtTheTarget) {
+  rs::DecompositionOptions d;
+  d.radius = 0.7;
+  std::mt19937_64 rng(5);
+  const rs::Decomposition decomposition(d, rng);
+  DecompositionSteering steering(decomposition);
+  for (int i = 0; i < 500; ++i) {
+    const Pose2 a{testing::unit01(rng) * 4, testing::unit01(rng) * 4,
+                  std::numbers::pi * (2 * testing::unit01(rng) - 1)};
+    const Pose2 b{testing::unit01(rng) * 4, testing::unit01(rng) * 4,
+                  std::numbers::pi * (2 * testing::unit01(rng) - 1)};
+    const rs::Path p = steering.path(a, b, 0.7);
+    EXPECT_LE(testing::pose_error(final_pose(a, p), b), 1e-6);
+    EXPECT_NEAR(steering.distance(a, b, 0.7), p.length(), 1e-9);
+    EXPECT_GE(p.length(), rs::shortest_length(a, b, 0.7) - 1e-9);
+  }
+}
+
+// A path stored between goal poses of two objects; then the whole scene moves
+// rigidly (both objects with it): the database hands out the same segments,
+// which end at the new goal pose within 1e-9 and are free by the exact
+// reference in the moved scene.
+TEST(PathDatabase, PathBetweenRigidlyMovedObjectsEndsAtTheNewPosesAndIsFree) {
+  int checked = 0;
+  for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::CSpace cspace(scene);
+    LegPlanner planner(scene, cspace);
+    const double radius = scene.wheelchair.turning_radius;
+    std::mt19937_64 rng(11);
+    for (const Pose2 t : {Pose2{0.3, -0.2, 0.0}, Pose2{1.5, 2.0, 0.9}, Pose2{-3.0, 0.5, -2.4}}) {
+      const geometry::Scene moved = moved_scene(scene, t);
+      const geometry::CSpace moved_cspace(moved);
+      const testing::ReferenceChecker reference(moved);
+      PathDatabase db;
+      int stored = 0;
+      for (std::size_t a = 0; a < scene.objects.size() && stored < 3; ++a) {
+        for (std::size_t b = 0; b < scene.objects.size() && stored < 3; ++b) {
+          if (a == b) continue;
+          const auto ga = goal_poses(scene, scene.objects[a], scene.objects[a].pose, cspace);
+          const auto gb = goal_poses(scene, scene.objects[b], scene.objects[b].pose, cspace);
+          if (ga.empty() || gb.empty()) continue;
+          const GoalPose& from = ga[rng() % ga.size()];
+          const GoalPose& to = gb[rng() % gb.size()];
+          const LegResult r = planner.plan(from.pose, to.pose, rng());
+          if (!r.found) continue;
+          const LegKey key{static_cast<int>(a), static_cast<int>(b), from.slot, to.slot};
+          db.store(key, from.pose, to.pose, r.path);
+          // Goal poses of the moved objects: the same slots, moved rigidly.
+          const auto ma = goal_poses(moved, moved.objects[a], moved.objects[a].pose, moved_cspace);
+          const auto mb = goal_poses(moved, moved.objects[b], moved.objects[b].pose, moved_cspace);
+          const Pose2 new_from = apply(t, from.pose), new_to = apply(t, to.pose);
+          for (const auto& g : ma)
+            if (g.slot == from.slot) {
+              EXPECT_LE(testing::pose_error(g.pose, new_from), 1e-9);
+            }
+          for (const auto& g : mb)
+            if (g.slot == to.slot) {
+              EXPECT_LE(testing::pose_error(g.pose, new_to), 1e-9);
+            }
+          rs::Path path;
+          ASSERT_TRUE(db.lookup(key, new_from, new_to, path));
+          EXPECT_LE(testing::pose_error(final_pose(new_from, path), new_to), 1e-9);
+          testing::expect_valid_path(reference, new_from, new_to, path, radius,
+                                     file + std::string(" transformed leg"));
+          // Only one end moved: not rigid, so the database does not pretend.
+          EXPECT_FALSE(db.lookup(key, new_from, apply({0.05, 0.0, 0.0}, new_to), path));
+          ++stored;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_GE(checked, 6);
+}
+
+//! Random moves of one object at a time, as the annealer makes them (small
+//! steps, sometimes a rotation); after every move a batch of legs is served
+//! by the ReusePlanner. Every path it returns, reused, repaired or planned,
+//! is checked by the exact reference in the layout of that moment.
+TEST(ReusePlanner, EveryReturnedPathIsValidInTheCurrentLayoutUnderRandomMoves) {
+  std::uint64_t reused = 0, repaired = 0, planned = 0, failures_reused = 0;
+  for (const std::string file : {"office.json", "living_room.json", "bedroom.json"}) {
+    geometry::Scene work =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    geometry::CSpace cspace(work);
+    ReusePlanner reuse(work, cspace, {}, ReuseOptions{}, 7);
+    LegPlanner planner(work, cspace, {}, reuse.hooks().planner);
+    const double radius = work.wheelchair.turning_radius;
+    std::mt19937_64 rng(21);
+    // Fixed legs (object pairs, slots) asked every iteration, door included.
+    std::vector<LegKey> keys;
+    const int n = static_cast<int>(work.objects.size());
+    for (int i = 0; i < 10; ++i) {
+      const int a = static_cast<int>(rng() % (n + 1)) - 1;
+      int b = static_cast<int>(rng() % n);
+      if (b == a) b = (b + 1) % n;
+      keys.push_back({a, b, a < 0 ? 0 : static_cast<int>(rng() % 8), static_cast<int>(rng() % 8)});
+    }
+    auto goal = [&](int object, int slot) -> std::optional<Pose2> {
+      if (object < 0) return geometry::door_start_pose(work);
+      for (const auto& g :
+           goal_poses(work, work.objects[object], cspace.object_pose(object), cspace))
+        if (g.slot == slot) return g.pose;
+      return std::nullopt;
+    };
+    for (int iteration = 0; iteration < 14; ++iteration) {
+      if (iteration > 0) {
+        const int moved = static_cast<int>(rng() % n);
+        if (work.objects[moved].fixed) continue;
+        Pose2 p = work.objects[moved].pose;
+        if (rng() % 4 == 0) {
+          p.theta = geometry::wrap_angle(p.theta + 0.3 * (2 * testing::unit01(rng) - 1));
+        } else {
+          p.x += 0.15 * (2 * testing::unit01(rng) - 1);
+          p.y += 0.15 * (2 * testing::unit01(rng) - 1);
+        }
+        work.objects[moved].pose = p;
+        cspace.move_object(moved, p);
+      }
+      const testing::ReferenceChecker reference(work);
+      reuse.begin_iteration(1000 + iteration);
+      for (const LegKey& key : keys) {
+        const auto from = goal(key.from_object, key.from_slot);
+        const auto to = goal(key.to_object, key.to_slot);
+        if (!from || !to) continue;
+        for (int twice = 0; twice < 2; ++twice) {  // the second is served from the iteration
+          const LegOutcome o = reuse.resolve(key, *from, *to, 0, true, planner);
+          if (!o.found) continue;
+          testing::expect_valid_path(reference, *from, *to, o.path, radius,
+                                     file + " iteration " + std::to_string(iteration));
+        }
+      }
+      const ReuseCounters c = reuse.end_iteration();
+      reused += c.legs_database;
+      repaired += c.legs_repaired;
+      planned += c.legs_planned;
+      failures_reused += c.failures_reused;
+    }
+  }
+  std::printf("legs: %llu from the database, %llu repaired, %llu planned; %llu failures reused\n",
+              static_cast<unsigned long long>(reused), static_cast<unsigned long long>(repaired),
+              static_cast<unsigned long long>(planned),
+              static_cast<unsigned long long>(failures_reused));
+  // The property must be exercised on reused paths, not only on fresh ones.
+  EXPECT_GT(reused, 20u);
+  EXPECT_GT(repaired, 0u);
+  EXPECT_GT(planned, 0u);
+}
+
+// Within an iteration every request of a key gets the same outcome, and a
+// stored path survives to the next iteration when nothing moved.
+TEST(ReusePlanner, SameKeySameOutcomeAndUnchangedLayoutIsServedFromTheDatabase) {
+  const geometry::Scene scene =
+      geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/living_room.json");
+  const geometry::CSpace cspace(scene);
+  ReusePlanner reuse(scene, cspace, {}, ReuseOptions::parse("paths"), 1);
+  LegPlanner p1(scene, cspace, {}, reuse.hooks().planner), p2(scene, cspace);
+  const auto ga = goal_poses(scene, scene.objects[0], scene.objects[0].pose, cspace);
+  const auto gb = goal_poses(scene, scene.objects[1], scene.objects[1].pose, cspace);
+  ASSERT_FALSE(ga.empty());
+  ASSERT_FALSE(gb.empty());
+  const LegKey key{0, 1, ga[0].slot, gb[0].slot};
+  reuse.begin_iteration(5);
+  const LegOutcome a = reuse.resolve(key, ga[0].pose, gb[0].pose, 1, true, p1);
+  const LegOutcome b = reuse.resolve(key, ga[0].pose, gb[0].pose, 2, true, p2);
+  ASSERT_TRUE(a.found);
+  EXPECT_EQ(a.path.segments, b.path.segments);
+  EXPECT_EQ(a.source, LegSource::kPlanned);
+  reuse.end_iteration();
+  reuse.begin_iteration(6);
+  const LegOutcome c = reuse.resolve(key, ga[0].pose, gb[0].pose, 1, true, p1);
+  EXPECT_EQ(c.source, LegSource::kReused);
+  EXPECT_FALSE(c.planned);
+  EXPECT_EQ(c.path.segments, a.path.segments);
+  const ReuseCounters counters = reuse.end_iteration();
+  EXPECT_EQ(counters.legs_database, 1u);
+  EXPECT_EQ(counters.leg_requests, 1u);
+}
+
+}  // namespace
+}  // namespace hrs::planning
