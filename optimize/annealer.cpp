@@ -87,12 +87,23 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
       }
       move.to.theta = geometry::wrap_angle(move.from.theta + turn);
     } else {
-      move.to.x += (2.0 * unit(rng) - 1.0) * step;
-      move.to.y += (2.0 * unit(rng) - 1.0) * step;
+      const double jump = unit(rng), rx = unit(rng), ry = unit(rng);
+      if (options.bounds && jump < options.jump_probability * shrink) {
+        // A jump anywhere in the bounds (a symmetric proposal): escapes
+        // places that small steps cannot leave while the chain is hot.
+        const auto& b = *options.bounds;
+        move.to.x = b[0] + rx * (b[2] - b[0]);
+        move.to.y = b[1] + ry * (b[3] - b[1]);
+        move.jump = true;
+      } else {
+        move.to.x += (2.0 * rx - 1.0) * step;
+        move.to.y += (2.0 * ry - 1.0) * step;
+      }
     }
     const double u = unit(rng);
     e.object = object;
     e.rotation = move.rotation;
+    e.jump = move.jump;
 
     poses[object] = move.to;
     e.valid = callbacks.move_valid(poses, object);

@@ -2,7 +2,8 @@
 // Simulated annealing over object poses (paper §III-E): Metropolis acceptance
 // min(1, exp(−ΔC/t)) under geometric cooling; a move translates one movable
 // object (step shrinking geometrically with the temperature) or rotates it
-// (a quarter/half turn, or a small turn that also shrinks). A move that the
+// (a quarter/half turn, or a small turn that also shrinks); while hot, some
+// translations jump anywhere in a given box. A move that the
 // caller's exact validity test rejects is never evaluated. The best layout
 // seen among fully valid layouts is kept.
 //
@@ -12,8 +13,10 @@
 // seeded engine passed in; the order of draws is fixed, so a run is a
 // function of (seed, callbacks).
 
+#include <array>
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -31,6 +34,11 @@ struct AnnealOptions {
   double step_end = 0.02;                 //!< largest translation at t_end, metres
   double rotate_probability = 0.3;        //!< share of moves that rotate
   double quarter_turn_probability = 0.5;  //!< share of rotations by ±π/2 or π
+  //! Box [xmin, ymin, xmax, ymax] for jump moves; none: translations only step.
+  std::optional<std::array<double, 4>> bounds;
+  //! Share of translations that jump to a uniform position in `bounds` at
+  //! t_start; it shrinks with the step (geometrically to step_end/step_start).
+  double jump_probability = 0.2;
 };
 
 //! One proposed move of one object.
@@ -38,6 +46,7 @@ struct Move {
   int object = -1;  //!< index into the poses; -1 for the initial evaluation
   Pose2 from, to;
   bool rotation = false;
+  bool jump = false;  //!< a translation to a uniform position in the bounds
 };
 
 //! What happened in one iteration (for reports).
@@ -46,6 +55,7 @@ struct TraceEntry {
   double temperature = 0.0;
   int object = -1;
   bool rotation = false;
+  bool jump = false;
   bool valid = false;          //!< passed the exact validity test
   double proposed_cost = 0.0;  //!< NaN when not valid (never evaluated)
   bool accepted = false;

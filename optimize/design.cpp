@@ -1,5 +1,7 @@
 #include "optimize/design.h"
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -136,6 +138,13 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
 
   AnnealOptions schedule = options.anneal;
   schedule.iterations = options.iterations;
+  if (!schedule.bounds) {
+    std::array<double, 4> box{1e300, 1e300, -1e300, -1e300};
+    for (const auto& v : scene.room.polygon)
+      box = {std::min(box[0], v.x), std::min(box[1], v.y), std::max(box[2], v.x),
+             std::max(box[3], v.y)};
+    schedule.bounds = box;  // jumps land anywhere in the room's bounding box
+  }
   schedule.t_start = std::max(1e-6, options.t_start_fraction * current_terms.total());
   schedule.t_end = schedule.t_start * options.t_end_ratio;
   result.t_start = schedule.t_start;

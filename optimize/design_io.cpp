@@ -109,7 +109,7 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
         {"iteration", e.iteration + 1},
         {"temperature", e.temperature},
         {"object", e.object >= 0 ? json(result.layout.objects[e.object].id) : json(nullptr)},
-        {"move", e.rotation ? "rotate" : "translate"},
+        {"move", e.rotation ? "rotate" : (e.jump ? "jump" : "translate")},
         {"valid", e.valid},
         {"accepted", e.accepted},
         {"proposed", finite_or_null(e.proposed_cost)},

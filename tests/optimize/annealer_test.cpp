@@ -163,5 +163,39 @@ TEST(Annealer, BestIsTheMinimumOverValidAcceptedLayoutsAndRunsAreSeeded) {
   EXPECT_NEAR(r1.best_cost, std::sin(3 * r1.best[0].x) + 0.1 * r1.best[0].y * r1.best[0].y, 1e-12);
 }
 
+TEST(Annealer, JumpsLandInTheBoundsAndOnlyWhileHot) {
+  AnnealOptions o;
+  o.iterations = 4000;
+  o.bounds = std::array<double, 4>{-1.0, 2.0, 3.0, 5.0};
+  int early = 0, late = 0, without = 0;
+  AnnealCallbacks cb;
+  cb.move_valid = [](const std::vector<Pose2>&, int) { return true; };
+  cb.cost = [](const std::vector<Pose2>&, const Move&) { return 0.0; };
+  int k = 0;
+  cb.rejected = [](const Move&) {};
+  cb.progress = [&](const TraceEntry&) { ++k; };
+  auto watch = cb;
+  watch.cost = [&](const std::vector<Pose2>& p, const Move& m) {
+    if (m.jump) {
+      EXPECT_FALSE(m.rotation);
+      EXPECT_GE(p[0].x, -1.0);
+      EXPECT_LE(p[0].x, 3.0);
+      EXPECT_GE(p[0].y, 2.0);
+      EXPECT_LE(p[0].y, 5.0);
+      (k < 1000 ? early : late) += 1;
+    }
+    return 0.0;
+  };
+  std::mt19937_64 rng(5);
+  anneal({{10, 10, 0}}, {true}, o, watch, rng);
+  EXPECT_GT(early, 50);
+  EXPECT_LT(late, early);
+  o.bounds.reset();
+  watch.cost = [&](const std::vector<Pose2>&, const Move& m) { return without += m.jump, 0.0; };
+  std::mt19937_64 rng2(5);
+  anneal({{10, 10, 0}}, {true}, o, watch, rng2);
+  EXPECT_EQ(without, 0);
+}
+
 }  // namespace
 }  // namespace hrs::optimize
