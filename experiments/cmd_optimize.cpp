@@ -29,7 +29,14 @@ namespace {
 // Set by the SIGINT handler; a signal handler can only reach a static.
 std::atomic<bool> g_interrupted{false};
 
-extern "C" void on_sigint(int) { g_interrupted.store(true); }
+// The first Ctrl-C asks for a clean stop; a second one ends the process at
+// once (the default action), for when an iteration takes too long.
+extern "C" void on_sigint(int) {
+  if (g_interrupted.exchange(true)) {
+    std::signal(SIGINT, SIG_DFL);
+    std::raise(SIGINT);
+  }
+}
 
 constexpr const char* kDesignUsage =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
@@ -51,7 +58,8 @@ constexpr const char* kDesignUsage =
     "                    trees     RRT trees kept while their root barely moves (§V-C)\n"
     "                    failures  a failed leg is not re-planned while no object moved\n"
     "                              within reach of its RRT's nodes (beyond the paper)\n"
-    "Ctrl-C stops after the current iteration, writes the best design so far, exits 130.\n";
+    "Ctrl-C stops after the current iteration, writes the best design so far, exits 130;\n"
+    "a second Ctrl-C quits at once.\n";
 
 std::string format_eta(double seconds) {
   const long s = static_cast<long>(seconds + 0.5);
