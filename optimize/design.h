@@ -104,7 +104,9 @@ inline constexpr double kRecheckPiece = 0.05;
 //! false when it did so. Guards the outputs against planner defects.
 bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour);
 
-//! Seed of tour k at iteration `iteration` (0: the initial layout).
+//! Seed of tour k in planning round `iteration` (0: the initial layout; round r is
+//! the r-th proposal that passed the exact checks, so rejected-before-planning
+//! proposals consume no round).
 std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour);
 
 }  // namespace hrs::optimize
