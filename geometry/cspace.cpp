@@ -61,8 +61,7 @@ std::vector<Vec2> hull(std::vector<Vec2> pts) {
 int hull_fixed(const Vec2 (&in)[12], Vec2 (&out)[12]) {
   Vec2 pts[12];
   std::copy(in, in + 12, pts);
-  std::sort(pts, pts + 12,
-            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(pts, pts + 12, [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   Vec2 h[24];
   int k = 0;
   for (int i = 0; i < 12; ++i) {
@@ -480,10 +479,7 @@ Clearance CSpace::clearance(const Pose2& pose) const {
       Vec2 ca = a, cb = b;
       if (da < 0) ca = a + (da / (da - db)) * (b - a);
       if (db < 0) cb = b + (db / (db - da)) * (a - b);
-      const Vec2 ab = cb - ca;
-      const double len2 = dot(ab, ab);
-      const double t = len2 > 0 ? std::clamp(dot(p - ca, ab) / len2, 0.0, 1.0) : 0.0;
-      best[side] = std::min(best[side], norm(p - (ca + t * ab)));
+      best[side] = std::min(best[side], point_segment_distance(p, ca, cb));
     }
   };
   for (std::size_t i = 0; i < room_.size(); ++i) visit(room_[i], room_[(i + 1) % room_.size()]);

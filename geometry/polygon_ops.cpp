@@ -115,13 +115,8 @@ bool interiors_overlap(const Polygon& a, const Polygon& b) {
 
 double boundary_distance(Vec2 p, const Polygon& polygon) {
   double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec2 a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-    const Vec2 ab = b - a;
-    const double len2 = dot(ab, ab);
-    const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, norm(p - (a + t * ab)));
-  }
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    best = std::min(best, point_segment_distance(p, polygon[i], polygon[(i + 1) % polygon.size()]));
   return best;
 }
 

@@ -32,6 +32,24 @@ inline double wrap_angle(double a) {
   return a;
 }
 
+//! Distance from p to the segment [a, b] (doubles: for costs and filters).
+inline double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  double t = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
+  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  return norm(p - (a + t * ab));
+}
+
+//! True if segments [a, b] and [c, d] cross at a point interior to both
+//! (doubles; touching or collinear segments do not cross).
+inline bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a);
+  const double d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0)) && d1 != 0 && d2 != 0 && d3 != 0 &&
+         d4 != 0;
+}
+
 //! A rigid pose: position and heading (the direction the front faces).
 struct Pose2 {
   double x = 0.0;      //!< metres

@@ -6,26 +6,14 @@
 
 namespace hrs::planning {
 
+using geometry::point_segment_distance;
 using geometry::Polygon;
 using geometry::Pose2;
+using geometry::segments_cross;
 using geometry::Side;
 using geometry::Vec2;
 
 namespace {
-
-double point_segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = geometry::dot(ab, ab);
-  double t = len2 > 0.0 ? geometry::dot(p - a, ab) / len2 : 0.0;
-  t = std::clamp(t, 0.0, 1.0);
-  return geometry::norm(p - (a + t * ab));
-}
-
-bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
-  const double d1 = geometry::cross(b - a, c - a), d2 = geometry::cross(b - a, d - a);
-  const double d3 = geometry::cross(d - c, a - c), d4 = geometry::cross(d - c, b - c);
-  return ((d1 > 0) != (d2 > 0)) && ((d3 > 0) != (d4 > 0));
-}
 
 bool inside(Vec2 p, const Polygon& poly) {
   bool in = false;

@@ -17,20 +17,13 @@
 #include "geometry/cspace.h"
 #include "geometry/scene.h"
 #include "rs/reeds_shepp.h"
+#include "tests/geometry/fixtures.h"
 #include "tests/geometry/reference.h"
 
 namespace hrs::testing {
 
 //! Paths of the scene files shipped in scenes/ (sorted).
-inline std::vector<std::string> planning_scene_files() {
-  std::vector<std::string> out;
-  const std::filesystem::path dir = std::filesystem::path(HRSPACE_SOURCE_DIR) / "scenes";
-  if (std::filesystem::exists(dir))
-    for (const auto& e : std::filesystem::directory_iterator(dir))
-      if (e.path().extension() == ".json") out.push_back(e.path().string());
-  std::sort(out.begin(), out.end());
-  return out;
-}
+inline std::vector<std::string> planning_scene_files() { return scene_files(); }
 
 inline double unit01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
 
