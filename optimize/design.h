@@ -41,7 +41,7 @@ struct DesignOptions {
   std::uint64_t seed = 1;
   int iterations = 700;           //!< annealing iterations (paper: 700)
   int threads = 0;                //!< tour-planning threads, caller included (0: all cores)
-  double t_start_fraction = 0.1;  //!< t_start = this × initial total cost
+  double t_start_fraction = 0.03;  //!< t_start = this × initial total cost (docs/optimize.md)
   double t_end_ratio = 1e-3;      //!< t_end = this × t_start
   AnnealOptions anneal;           //!< moves; its temperatures and iterations are set from above
   planning::TourOptions tour;     //!< the tour planner (baseline)
