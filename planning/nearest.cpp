@@ -64,13 +64,11 @@ void PoseNearest::remove(std::int32_t id) {
   if (index_of_id_[id] >= 0) nodes_[index_of_id_[id]].removed = true;
 }
 
-void PoseNearest::search(std::int32_t node, int depth, const double q[3], double lo[3],
-                         double hi[3], std::size_t k, std::vector<Candidate>& heap) const {
-  const Node& n = nodes_[node];
-  const Candidate c{point_distance(q, n.p), static_cast<std::uint32_t>(node)};
-  if (n.removed) {
-    // Guides the descent only.
-  } else if (heap.size() < k) {
+namespace {
+//! Keeps the k best candidates in a max-heap (worst at the front).
+template <class Candidate>
+void offer(std::vector<Candidate>& heap, std::size_t k, const Candidate& c) {
+  if (heap.size() < k) {
     heap.push_back(c);
     std::push_heap(heap.begin(), heap.end());
   } else if (c < heap.front()) {
@@ -78,6 +76,14 @@ void PoseNearest::search(std::int32_t node, int depth, const double q[3], double
     heap.back() = c;
     std::push_heap(heap.begin(), heap.end());
   }
+}
+}  // namespace
+
+void PoseNearest::search(std::int32_t node, int depth, const double q[3], double lo[3],
+                         double hi[3], std::size_t k, std::vector<Candidate>& heap) const {
+  const Node& n = nodes_[node];
+  const Candidate c{point_distance(q, n.p), static_cast<std::uint32_t>(node)};
+  if (!n.removed) offer(heap, k, c);  // removed nodes only guide the descent
   const int axis = depth % 3;
   const int first = q[axis] < n.p[axis] ? 0 : 1;
   for (int pass = 0; pass < 2; ++pass) {
@@ -105,15 +111,7 @@ void PoseNearest::nearest(const geometry::Pose2& query, std::size_t k,
   if (nodes_.size() < kLinearScanBelow) {
     for (std::size_t i = 0; i < nodes_.size(); ++i) {
       if (nodes_[i].removed) continue;
-      const Candidate c{point_distance(q, nodes_[i].p), static_cast<std::uint32_t>(i)};
-      if (heap.size() < k) {
-        heap.push_back(c);
-        std::push_heap(heap.begin(), heap.end());
-      } else if (c < heap.front()) {
-        std::pop_heap(heap.begin(), heap.end());
-        heap.back() = c;
-        std::push_heap(heap.begin(), heap.end());
-      }
+      offer(heap, k, Candidate{point_distance(q, nodes_[i].p), static_cast<std::uint32_t>(i)});
     }
   } else {
     double lo[3] = {-kInf, -kInf, -kPi};

@@ -61,24 +61,20 @@ inline bool nonneg(double& a) {
   }
   return false;
 }
-//! Mirror of nonneg() for parameters that must be <= 0.
-inline bool nonpos(double& a) {
-  if (a <= 0.0) return true;
-  if (a <= kTol) {
-    a = 0.0;
-    return true;
-  }
-  if (a >= kPi - kTol) {
-    a -= kTwoPi;
-    return true;
-  }
-  return false;
-}
 //! Non-angular parameter (straight length) that must be <= 0.
 inline bool nonpos_len(double& a) {
   if (a <= 0.0) return true;
   if (a <= kTol) {
     a = 0.0;
+    return true;
+  }
+  return false;
+}
+//! Mirror of nonneg() for arc angles that must be <= 0 (reads +π as −π).
+inline bool nonpos(double& a) {
+  if (nonpos_len(a)) return true;
+  if (a >= kPi - kTol) {
+    a -= kTwoPi;
     return true;
   }
   return false;
