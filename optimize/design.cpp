@@ -109,6 +109,7 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
   std::vector<planning::Tour> tours(m);
   std::vector<int> invalidated(m, 0);
   double planning_ms = 0.0;
+  std::optional<planning::ReuseCounters> iteration_legs;
   auto plan_all = [&] {
     const auto p0 = Clock::now();
     // The proposed planner's legs derive from (seed, iteration), not the tour.
@@ -118,7 +119,7 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
       tours[k] = planners[k]->plan(result.sequences[k].nodes);
       invalidated[k] = recheck_tour(cspace, scene.wheelchair.turning_radius, tours[k]) ? 0 : 1;
     });
-    if (reuse) reuse->end_iteration();
+    if (reuse) iteration_legs = reuse->end_iteration();
     for (int k = 0; k < m; ++k) result.tours_invalidated += invalidated[k];
     planning_ms = 1e3 * seconds_since(p0);
     result.time_planning_s += planning_ms / 1e3;
@@ -191,6 +192,7 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
       step.proposed = proposed_terms;
       step.planning_ms = planning_ms;
       step.planned = plan_every_iteration;
+      if (plan_every_iteration) step.legs = iteration_legs;
     }
     if (e.accepted) {
       current_terms = proposed_terms;

@@ -24,6 +24,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,8 @@ struct DesignStep {
   CostTerms proposed;        //!< terms of the proposed layout (zeros when invalid)
   double planning_ms = 0.0;  //!< wall time of planning the M tours
   bool planned = false;      //!< the M tours were planned for this proposal
+  //! The proposed planner's leg counts of this iteration (its trace "legs").
+  std::optional<planning::ReuseCounters> legs;
 };
 
 struct DesignResult {

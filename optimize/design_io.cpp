@@ -118,6 +118,12 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
     if (s.planned) {
       step["tours_found"] = s.proposed.tours_found;
       step["planning_ms"] = s.planning_ms;
+      if (s.legs) {
+        const auto& c = *s.legs;
+        step["legs"] = {{"database", c.legs_database}, {"repaired", c.legs_repaired},
+                        {"planned", c.legs_planned},   {"failed", c.legs_failed},
+                        {"failed_ms", c.failed_ms},    {"planned_ms", c.planned_ms}};
+      }
     }
     trace.push_back(std::move(step));
   }

@@ -15,12 +15,17 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 double angle_gap(double a, double b) { return std::abs(geometry::wrap_angle(a - b)); }
 }  // namespace
 
+// sqrt(dx² + dy²) rather than std::hypot: the coordinates are metres in a
+// room, far from overflow, and hypot's scaling made it the planner's hottest
+// function.
 double PoseNearest::distance(const geometry::Pose2& a, const geometry::Pose2& b) const {
-  return std::hypot(a.x - b.x, a.y - b.y) + weight_ * angle_gap(a.theta, b.theta);
+  const double dx = a.x - b.x, dy = a.y - b.y;
+  return std::sqrt(dx * dx + dy * dy) + weight_ * angle_gap(a.theta, b.theta);
 }
 
 double PoseNearest::point_distance(const double a[3], const double b[3]) const {
-  return std::hypot(a[0] - b[0], a[1] - b[1]) + weight_ * angle_gap(a[2], b[2]);
+  const double dx = a[0] - b[0], dy = a[1] - b[1];
+  return std::sqrt(dx * dx + dy * dy) + weight_ * angle_gap(a[2], b[2]);
 }
 
 double PoseNearest::box_bound(const double q[3], const double lo[3], const double hi[3]) const {
@@ -28,7 +33,7 @@ double PoseNearest::box_bound(const double q[3], const double lo[3], const doubl
   const double dy = std::max({0.0, lo[1] - q[1], q[1] - hi[1]});
   double dt = 0.0;
   if (q[2] < lo[2] || q[2] > hi[2]) dt = std::min(angle_gap(q[2], lo[2]), angle_gap(q[2], hi[2]));
-  return std::hypot(dx, dy) + weight_ * dt;
+  return std::sqrt(dx * dx + dy * dy) + weight_ * dt;
 }
 
 void PoseNearest::insert(const geometry::Pose2& pose, std::int32_t id) {
@@ -48,10 +53,12 @@ void PoseNearest::insert(const geometry::Pose2& pose, std::int32_t id) {
   int depth = 0;
   for (;;) {
     Node& c = nodes_[cur];
+    ++c.alive;
     const int axis = depth % 3;
     const int side = n.p[axis] < c.p[axis] ? 0 : 1;
     if (c.child[side] < 0) {
       c.child[side] = index;
+      nodes_[index].parent = cur;
       return;
     }
     cur = c.child[side];
@@ -61,7 +68,10 @@ void PoseNearest::insert(const geometry::Pose2& pose, std::int32_t id) {
 
 void PoseNearest::remove(std::int32_t id) {
   if (id < 0 || static_cast<std::size_t>(id) >= index_of_id_.size()) return;
-  if (index_of_id_[id] >= 0) nodes_[index_of_id_[id]].removed = true;
+  std::int32_t i = index_of_id_[id];
+  if (i < 0 || nodes_[i].removed) return;
+  nodes_[i].removed = true;
+  for (; i >= 0; i = nodes_[i].parent) --nodes_[i].alive;
 }
 
 namespace {
@@ -89,7 +99,7 @@ void PoseNearest::search(std::int32_t node, int depth, const double q[3], double
   for (int pass = 0; pass < 2; ++pass) {
     const int side = pass == 0 ? first : 1 - first;
     const std::int32_t child = n.child[side];
-    if (child < 0) continue;
+    if (child < 0 || nodes_[child].alive == 0) continue;
     // The child's cell: this cell cut at the node's coordinate.
     double* bound = side == 0 ? &hi[axis] : &lo[axis];
     const double saved = *bound;

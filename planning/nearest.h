@@ -26,8 +26,10 @@ class PoseNearest {
 
   //! Adds a pose with the caller's id (ids need not be dense).
   void insert(const geometry::Pose2& pose, std::int32_t id);
-  //! Removes the pose with this id from later answers (a tombstone: O(1),
-  //! the node still guides the search). Unknown ids are ignored.
+  //! Removes the pose with this id from later answers (a tombstone: the
+  //! node still guides the search, and subtrees with no live pose left are
+  //! skipped, so a tree whose nodes are mostly removed stays fast).
+  //! O(depth). Unknown or already removed ids are ignored.
   void remove(std::int32_t id);
   //! Ids of the (at most) k nearest poses to `query`, nearest first; ties are
   //! broken by insertion order, so the answer is deterministic.
@@ -49,6 +51,8 @@ class PoseNearest {
     double p[3];  //!< x, y, theta wrapped to (−pi, pi]
     std::int32_t id;
     std::int32_t child[2] = {-1, -1};
+    std::int32_t parent = -1;
+    std::int32_t alive = 1;  //!< poses not removed in this subtree (itself included)
     bool removed = false;
   };
   struct Candidate {

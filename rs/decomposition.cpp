@@ -2,6 +2,8 @@
 
 #include "rs/decomposition.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -16,8 +18,22 @@ double weight(const DecompositionOptions& o) {
 
 }  // namespace
 
+//! The look-up grid: nx × ny × nt cells over [−W, W] × [−D, D] × [−π, π);
+//! kUnknown until a cell's word is first asked for.
+struct Decomposition::Grid {
+  static constexpr std::uint8_t kUnknown = 0xff;
+  int nx = 0, ny = 0, nt = 0;
+  double cx = 0, cy = 0, ct = 0;  //!< cell sizes
+  std::unique_ptr<std::atomic<std::uint8_t>[]> words;
+};
+
+Decomposition::~Decomposition() = default;
+Decomposition::Decomposition(Decomposition&&) noexcept = default;
+Decomposition& Decomposition::operator=(Decomposition&&) noexcept = default;
+
 Decomposition::Decomposition(const DecompositionOptions& options, std::mt19937_64& rng)
     : options_(options), tree_(weight(options)) {
+  static_assert(kWordCount < Grid::kUnknown, "a word id must fit a grid cell");
   const Pose2 origin{};
   auto add = [&](const Pose2& p, int word) {
     samples_.push_back({p, word});
@@ -40,6 +56,19 @@ Decomposition::Decomposition(const DecompositionOptions& options, std::mt19937_6
       add(p, word);
     }
   }
+  if (options_.grid_cell > 0.0 && options_.grid_angle > 0.0) {
+    auto g = std::make_unique<Grid>();
+    g->nx = std::max(1, static_cast<int>(std::ceil(2.0 * options_.room_width / options_.grid_cell)));
+    g->ny = std::max(1, static_cast<int>(std::ceil(2.0 * options_.room_depth / options_.grid_cell)));
+    g->nt = std::max(1, static_cast<int>(std::ceil(2.0 * std::numbers::pi / options_.grid_angle)));
+    g->cx = 2.0 * options_.room_width / g->nx;
+    g->cy = 2.0 * options_.room_depth / g->ny;
+    g->ct = 2.0 * std::numbers::pi / g->nt;
+    const std::size_t n = static_cast<std::size_t>(g->nx) * g->ny * g->nt;
+    g->words = std::make_unique<std::atomic<std::uint8_t>[]>(n);
+    for (std::size_t i = 0; i < n; ++i) g->words[i].store(Grid::kUnknown, std::memory_order_relaxed);
+    grid_ = std::move(g);
+  }
 }
 
 Pose2 Decomposition::uniform(std::mt19937_64& rng) const {
@@ -57,8 +86,32 @@ Pose2 Decomposition::relative(const Pose2& from, const Pose2& to) const {
   return {c * dx + s * dy, -s * dx + c * dy, geometry::wrap_angle(to.theta - from.theta)};
 }
 
-int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {
+int Decomposition::nearest_word(const Pose2& from, const Pose2& to) const {
   return samples_[tree_.nearest(relative(from, to))].word;
+}
+
+int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {
+  const Pose2 q = relative(from, to);
+  if (!grid_) return samples_[tree_.nearest(q)].word;
+  const Grid& g = *grid_;
+  const double fx = (q.x + options_.room_width) / g.cx;
+  const double fy = (q.y + options_.room_depth) / g.cy;
+  const double ft = (q.theta + std::numbers::pi) / g.ct;
+  if (!(fx >= 0.0 && fx < g.nx && fy >= 0.0 && fy < g.ny))  // outside the box (or NaN)
+    return samples_[tree_.nearest(q)].word;
+  const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
+  const int it = std::clamp(static_cast<int>(ft), 0, g.nt - 1);
+  const std::size_t cell = (static_cast<std::size_t>(it) * g.ny + iy) * g.nx + ix;
+  std::uint8_t w = g.words[cell].load(std::memory_order_relaxed);
+  if (w == Grid::kUnknown) {
+    // Every thread that races here computes the same word.
+    const Pose2 centre{-options_.room_width + (ix + 0.5) * g.cx,
+                       -options_.room_depth + (iy + 0.5) * g.cy,
+                       -std::numbers::pi + (it + 0.5) * g.ct};
+    w = static_cast<std::uint8_t>(samples_[tree_.nearest(centre)].word);
+    g.words[cell].store(w, std::memory_order_relaxed);
+  }
+  return w;
 }
 
 std::optional<Path> Decomposition::predicted_path(const Pose2& from, const Pose2& to) const {

@@ -9,8 +9,18 @@
 // one word evaluated instead of 48) or exactly (all words). The prediction
 // is an approximation: evaluate() measures how often it is right and what it
 // costs when it is not.
+//
+// Look-up grid (our addition to the paper's "proper data structure"): a
+// nearest-sample search costs microseconds, more than solving all 48 words,
+// so predictions go through a grid over the sampled box (cells of
+// `grid_cell` metres × `grid_angle` radians). A cell holds the word of the
+// sample nearest its centre, filled on first use; later queries in the cell
+// cost one array read. The grid is a coarser Voronoi partition of the same
+// samples: evaluate() measures its accuracy. Filling is thread-safe and
+// deterministic (a cell's word depends only on the cell).
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <random>
 #include <vector>
@@ -31,6 +41,10 @@ struct DecompositionOptions {
   //! Heading weight of the nearest-neighbour metric, metres per radian;
   //! <= 0 means the turning radius (an arc of angle a has length r·a).
   double heading_weight = 0.0;
+  //! Look-up grid cell: metres along x and y, radians along θ; either <= 0
+  //! turns the grid off (every query searches the nearest sample).
+  double grid_cell = 0.05;
+  double grid_angle = 0.0872664625997164788;  //!< 5°
 };
 
 //! One kept sample: a goal pose relative to the start and its shortest word.
@@ -54,9 +68,15 @@ class Decomposition {
   //! Builds the decomposition with randomness from `rng` (deterministic for a
   //! given seed and options).
   Decomposition(const DecompositionOptions& options, std::mt19937_64& rng);
+  ~Decomposition();
+  Decomposition(Decomposition&&) noexcept;
+  Decomposition& operator=(Decomposition&&) noexcept;
 
-  //! Word predicted for the goal `to` seen from `from`.
+  //! Word predicted for the goal `to` seen from `from` (through the grid
+  //! when it is on and the relative pose lies in the sampled box).
   int predict_word(const Pose2& from, const Pose2& to) const;
+  //! Word of the sample nearest to the relative pose of `to` (no grid).
+  int nearest_word(const Pose2& from, const Pose2& to) const;
   //! Paper mode: the path of the predicted word, or nullopt when that word
   //! cannot connect the poses.
   std::optional<Path> predicted_path(const Pose2& from, const Pose2& to) const;
@@ -78,11 +98,13 @@ class Decomposition {
  private:
   Pose2 relative(const Pose2& from, const Pose2& to) const;
   Pose2 uniform(std::mt19937_64& rng) const;
+  struct Grid;
 
   DecompositionOptions options_;
   PoseKdTree tree_;
   std::vector<DecompositionSample> samples_;
   std::size_t drawn_ = 0;
+  std::unique_ptr<Grid> grid_;  //!< null when off
 };
 
 }  // namespace hrs::rs

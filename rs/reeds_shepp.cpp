@@ -33,6 +33,11 @@
 namespace hrs::rs {
 namespace {
 
+// |(a, b)| without std::hypot's overflow scaling: the solver works in units
+// of the turning radius, far from overflow, and hypot was its hottest call.
+inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
+
+
 constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kHalfPi = 0.5 * std::numbers::pi;
@@ -451,7 +456,7 @@ bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
   switch (code & 7) {
     case kLSL: {
       const double xi = x - sp, eta = y - 1.0 + cp;
-      u = std::hypot(xi, eta);
+      u = norm2(xi, eta);
       t = std::atan2(eta, xi);
       if (!nonneg(t)) return false;
       v = mod2pi(phi - t);
@@ -469,7 +474,7 @@ bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
     }
     case kLRL: {
       const double xi = x - sp, eta = y - 1.0 + cp;
-      const double r = std::hypot(xi, eta);
+      const double r = norm2(xi, eta);
       if (r > 4.0 + kTol) return false;
       u = -2.0 * std::asin(std::min(1.0, 0.25 * r));
       t = mod2pi(std::atan2(eta, xi) + 0.5 * u + kPi);
@@ -480,7 +485,7 @@ bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
     case kLRLRa:
     case kLRLRb: {
       const double xi = x + sp, eta = y - 1.0 - cp;
-      const double r = std::hypot(xi, eta);
+      const double r = norm2(xi, eta);
       double w;  // the tauOmega "v" argument
       if ((code & 7) == kLRLRa) {
         const double rho = 0.25 * (2.0 + r);
@@ -505,7 +510,7 @@ bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
     }
     case kLRSL: {
       const double xi = x - sp, eta = y - 1.0 + cp;
-      const double rho = std::hypot(xi, eta);
+      const double rho = norm2(xi, eta);
       if (rho * rho < 8.0 - kTol) return false;
       const double r = std::sqrt(std::max(0.0, rho * rho - 4.0));
       u = 2.0 - r;
@@ -517,7 +522,7 @@ bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
     }
     case kLRSR: {
       const double xi = x + sp, eta = y - 1.0 - cp;
-      const double rho = std::hypot(xi, eta);
+      const double rho = norm2(xi, eta);
       if (rho < 2.0 - kTol) return false;
       t = std::atan2(xi, -eta);
       if (!nonneg(t)) return false;
@@ -528,7 +533,7 @@ bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
     }
     default: {
       const double xi = x + sp, eta = y - 1.0 - cp;
-      const double rho = std::hypot(xi, eta);
+      const double rho = norm2(xi, eta);
       if (rho * rho < 20.0 - kTol) return false;
       u = 4.0 - std::sqrt(std::max(0.0, rho * rho - 4.0));
       if (!nonpos_len(u)) return false;

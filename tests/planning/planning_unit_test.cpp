@@ -99,6 +99,55 @@ TEST(PoseNearest, KdTreeMatchesLinearScanIncludingHeadingWrap) {
   }
 }
 
+// Removals prune whole subtrees once none of their poses is live: answers
+// must still equal a linear scan over the live poses, through thousands of
+// interleaved inserts, removals (some repeated, some of unknown ids) and
+// queries, down to a tree with no live pose at all.
+TEST(PoseNearest, RemovalsMatchLinearScanOverLivePoses) {
+  std::mt19937_64 rng(11);
+  PoseNearest tree(0.7);
+  std::vector<Pose2> poses;
+  std::vector<bool> live;
+  std::vector<std::int32_t> got;
+  int checked = 0;
+  for (int step = 0; step < 12000; ++step) {
+    const double u = unit01(rng);
+    if (step < 6000 && u < 0.5) {
+      poses.push_back({4 * unit01(rng), 4 * unit01(rng), std::numbers::pi * (2 * unit01(rng) - 1)});
+      live.push_back(true);
+      tree.insert(poses.back(), static_cast<std::int32_t>(poses.size() - 1));
+    } else if (u < 0.8 && !poses.empty()) {
+      // Remove the live pose nearest a random point (clusters of removals,
+      // like the planner's goal attempts), or an id again, or an unknown id.
+      const Pose2 at{4 * unit01(rng), 4 * unit01(rng), 0.0};
+      int pick = -1;
+      double best = 1e300;
+      for (std::size_t i = 0; i < poses.size(); ++i)
+        if (live[i] && tree.distance(at, poses[i]) < best)
+          best = tree.distance(at, poses[i]), pick = static_cast<int>(i);
+      if (pick >= 0) {
+        tree.remove(pick);
+        live[pick] = false;
+        tree.remove(pick);  // removing twice changes nothing
+      }
+      tree.remove(static_cast<std::int32_t>(poses.size() + 5));
+    } else {
+      const Pose2 query{4 * unit01(rng), 4 * unit01(rng), std::numbers::pi * (2 * unit01(rng) - 1)};
+      const std::size_t k = 1 + step % 10;
+      std::vector<std::pair<double, int>> all;
+      for (std::size_t i = 0; i < poses.size(); ++i)
+        if (live[i]) all.emplace_back(tree.distance(query, poses[i]), static_cast<int>(i));
+      std::sort(all.begin(), all.end());
+      tree.nearest(query, k, got);
+      ASSERT_EQ(got.size(), std::min(k, all.size())) << step;
+      for (std::size_t j = 0; j < got.size(); ++j) ASSERT_EQ(got[j], all[j].second) << step;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 2000);
+  EXPECT_EQ(std::count(live.begin(), live.end(), true), 0);  // drained to empty
+}
+
 TEST(PoseNearest, DistanceWrapsHeading) {
   PoseNearest n(0.5);
   EXPECT_NEAR(n.distance({0, 0, 3.1}, {0, 0, -3.1}), 0.5 * (2 * std::numbers::pi - 6.2), 1e-12);

@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <thread>
+#include <algorithm>
+#include <cmath>
 
 #include "rs/decomposition.h"
 #include "rs/kd_tree.h"
@@ -97,6 +100,66 @@ TEST(RsDecomposition, PredictedPathIsValidWhenReturnedAndNeverShorterThanExact) 
     EXPECT_NEAR(p->length(), d.predicted_length(a, b), 1e-12 * (1 + p->length()));
   }
   EXPECT_GT(returned, 0);
+}
+
+// The look-up grid answers the word of the sample nearest the centre of the
+// query's cell; with the grid off, the sample nearest the query itself. Both
+// checked against the kd-tree (itself checked against brute force above) on
+// queries from many start poses, including relative poses outside the
+// sampled box (answered without the grid) and from several threads at once
+// (cells filled concurrently must hold the same words).
+TEST(RsDecomposition, GridAnswersTheSampleNearestItsCellCentre) {
+  DecompositionOptions o = small_options();
+  std::mt19937_64 r1(5), r2(5);
+  const Decomposition grid(o, r1);
+  o.grid_cell = 0.0;
+  const Decomposition plain(o, r2);
+  ASSERT_EQ(grid.samples().size(), plain.samples().size());
+  std::mt19937_64 rng(17);
+  std::vector<std::pair<Pose2, Pose2>> queries;
+  for (int i = 0; i < 20000; ++i) {
+    const Pose2 a = random_pose(rng, 3.0);
+    queries.push_back({a, random_pose(rng, i % 4 == 0 ? 8.0 : 2.5)});
+  }
+  std::vector<int> words(queries.size());
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      for (std::size_t i = t; i < queries.size(); i += 4)
+        words[i] = grid.predict_word(queries[i].first, queries[i].second);
+    });
+  for (auto& th : threads) th.join();
+  const double cell = grid.options().grid_cell, pi = std::numbers::pi;
+  int inside = 0, agree_with_query = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const auto& [a, b] = queries[i];
+    EXPECT_EQ(plain.predict_word(a, b), plain.nearest_word(a, b));
+    EXPECT_EQ(grid.predict_word(a, b), words[i]);  // same answer once filled
+    // The relative pose and its cell centre.
+    const double c = std::cos(a.theta), s = std::sin(a.theta);
+    const Pose2 q{c * (b.x - a.x) + s * (b.y - a.y), -s * (b.x - a.x) + c * (b.y - a.y),
+                  geometry::wrap_angle(b.theta - a.theta)};
+    const int nx = static_cast<int>(std::ceil(2 * o.room_width / cell));
+    const int ny = static_cast<int>(std::ceil(2 * o.room_depth / cell));
+    const int nt = static_cast<int>(std::ceil(2 * pi / grid.options().grid_angle));
+    const double cx = 2 * o.room_width / nx, cy = 2 * o.room_depth / ny, ct = 2 * pi / nt;
+    const double fx = (q.x + o.room_width) / cx, fy = (q.y + o.room_depth) / cy;
+    if (!(fx >= 0 && fx < nx && fy >= 0 && fy < ny)) {
+      EXPECT_EQ(words[i], grid.nearest_word(a, b)) << i;  // outside: no grid
+      continue;
+    }
+    ++inside;
+    const int it = std::clamp(static_cast<int>((q.theta + pi) / ct), 0, nt - 1);
+    const Pose2 centre{-o.room_width + (static_cast<int>(fx) + 0.5) * cx,
+                       -o.room_depth + (static_cast<int>(fy) + 0.5) * cy, -pi + (it + 0.5) * ct};
+    EXPECT_EQ(words[i], grid.nearest_word({}, centre)) << i;
+    if (words[i] == grid.nearest_word(a, b)) ++agree_with_query;
+  }
+  EXPECT_GT(inside, 8000);
+  // A cell is 5 cm × 5°: its centre's nearest sample is mostly the query's.
+  EXPECT_GT(agree_with_query, 0.8 * inside);
+  std::printf("grid: %d of %d in-box queries answer the query's own nearest word (%.1f%%)\n",
+              agree_with_query, inside, 100.0 * agree_with_query / inside);
 }
 
 void report(const char* name, const DecompositionOptions& o, std::uint64_t seed) {
