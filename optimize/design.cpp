@@ -36,7 +36,7 @@ bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour&
   for (std::size_t i = 0; i < tour.legs.size(); ++i) {
     const auto& leg = tour.legs[i];
     const double length = leg.path.length();
-    if (validator.free_prefix(leg.from, leg.path, kRecheckPiece) < length - 1e-9) {
+    if (validator.certified_prefix(leg.from, leg.path, kRecheckPiece) < length - 1e-9) {
       tour.found = false;
       tour.legs.clear();
       tour.metrics = {};

@@ -102,7 +102,8 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
 inline constexpr double kRecheckPiece = 0.05;
 
 //! Re-validates a found tour in `cspace` with the continuous checks, every
-//! leg cut into kRecheckPiece pieces; a tour with a leg that is not
+//! leg cut into kRecheckPiece pieces, a piece that fails bisected before it
+//! counts (MotionValidator::certified_prefix); a tour with a leg that is not
 //! certified free becomes unfound (stats.depth = the failing leg). Returns
 //! false when it did so. Guards the outputs against planner defects.
 bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour);

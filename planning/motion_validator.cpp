@@ -50,4 +50,29 @@ double MotionValidator::free_prefix(const Pose2& start, const rs::Path& path, do
   return done;
 }
 
+bool MotionValidator::certified(const Pose2& start, const rs::Segment& part, int depth) {
+  if (segment_free(start, part)) return true;
+  if (depth <= 0) return false;
+  const rs::Segment half{part.steer, part.gear, 0.5 * part.length};
+  return certified(start, half, depth - 1) &&
+         certified(rs::advance(start, half, radius_), half, depth - 1);
+}
+
+double MotionValidator::certified_prefix(const Pose2& start, const rs::Path& path, double piece,
+                                         int refine_depth) {
+  double done = 0.0;
+  Pose2 p = start;
+  for (const rs::Segment& seg : path.segments) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / piece - 1e-9)));
+    const double len = seg.length / pieces;
+    for (int i = 0; i < pieces; ++i) {
+      const rs::Segment part{seg.steer, seg.gear, len};
+      if (!certified(p, part, refine_depth)) return done;
+      p = rs::advance(p, part, radius_);
+      done += len;
+    }
+  }
+  return done;
+}
+
 }  // namespace hrs::planning

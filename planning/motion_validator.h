@@ -39,12 +39,21 @@ class MotionValidator {
   //! segment borders); the path is free up to there. Equals path.length()
   //! when the whole path is free.
   double free_prefix(const Pose2& start, const rs::Path& path, double piece);
+  //! As free_prefix(), but a piece the continuous check cannot certify is
+  //! bisected up to `refine_depth` times (5 cm / 2^6 < 1 mm) before it counts
+  //! as blocked: the checks are conservative (a cover of the swept chair), so
+  //! a free motion cut differently can be certified where one cut was not,
+  //! and a blocked motion stays blocked at every cut.
+  double certified_prefix(const Pose2& start, const rs::Path& path, double piece,
+                          int refine_depth = 6);
 
   //! Continuous checks performed so far (one per segment or piece).
   std::uint64_t checks() const { return checks_; }
   void reset_checks() { checks_ = 0; }
 
  private:
+  bool certified(const Pose2& start, const rs::Segment& part, int depth);
+
   const CSpace* cspace_;
   double radius_;
   std::uint64_t checks_ = 0;
