@@ -2,6 +2,8 @@
 // (one leg of the baseline RRT, §III-B; one tour by branch and bound, §III-C).
 
 #include <iostream>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +14,7 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/scene.h"
+#include "planning/reuse.h"
 #include "planning/rrt.h"
 #include "planning/tour.h"
 #include "planning/tour_json.h"
@@ -69,12 +72,31 @@ std::vector<std::string> split_ids(const std::string& text) {
   return out;
 }
 
+//! --planner / --reuse of plan and tour: null for the baseline, else the
+//! proposed planner's techniques (only `allowed` make sense for one query).
+std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed) {
+  const std::string planner = args.get_or("planner", "baseline");
+  if (planner != "baseline" && planner != "proposed")
+    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
+  if (args.get("reuse") && planner != "proposed") throw InputError("--reuse needs --planner proposed");
+  if (planner == "baseline") return std::nullopt;
+  const std::string list = args.get_or("reuse", allowed);
+  planning::ReuseOptions o = planning::ReuseOptions::parse(list);
+  const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
+  if ((o.paths && !ok.paths) || (o.trees && !ok.trees) || (o.failures && !ok.failures))
+    throw InputError("--reuse: '" + list + "': only " + allowed +
+                     " act within one query (paths, trees and failures reuse work across the "
+                     "layouts of a design: see hrspace design --planner proposed)");
+  return o;
+}
+
 }  // namespace
 
 int cmd_plan(const Argv& argv) {
-  const Args args(argv, {"from", "to", "seed", "iterations", "step"});
+  const Args args(argv, {"from", "to", "seed", "iterations", "step", "planner", "reuse"});
   const std::string usage =
-      "hrspace plan SCENE --from x,y,theta --to x,y,theta [--seed N] [--iterations N] [--step M]";
+      "hrspace plan SCENE --from x,y,theta --to x,y,theta [--seed N] [--iterations N] [--step M]\n"
+      "                   [--planner baseline|proposed] [--reuse samples,steering]";
   if (args.help()) {
     std::cout << "usage: " << usage
               << "\n\nPlans one leg of the wheelchair in the scene's initial layout with the\n"
@@ -83,6 +105,9 @@ int cmd_plan(const Argv& argv) {
                  "segments, waypoints (every 5 cm), iterations, tree_nodes, collision_checks,\n"
                  "time_ms. --seed (default 1) makes the run reproducible; --iterations caps\n"
                  "the RRT (default 3000); --step is the tree's step length (default 0.25 m).\n"
+                 "--planner proposed draws the RRT's samples from the RS-decomposition and\n"
+                 "steers through its predicted words (paper V-A; --reuse samples or steering\n"
+                 "for one of them); the decomposition is built first, from --seed.\n"
                  "Exit 0 whether or not a path is found; 2 for a bad scene, or a start or\n"
                  "goal pose outside the room or in collision.\n";
     return 0;
@@ -100,15 +125,23 @@ int cmd_plan(const Argv& argv) {
   options.step_length = args.number("step", options.step_length);
   if (!(options.step_length > 0.0)) throw InputError("--step: must be > 0");
   const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  planning::LegPlanner planner(scene, cspace, options);
+  const auto reuse = planner_option(args, "samples,steering");
+  planning::TourOptions tour;
+  tour.planner = options;
+  std::unique_ptr<planning::ReusePlanner> proposed;
+  if (reuse) proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, tour, *reuse, seed);
+  planning::LegPlanner planner(scene, cspace, options,
+                               proposed ? proposed->hooks().planner : planning::PlannerHooks{});
   const planning::LegResult result = planner.plan(from, to, seed);
   std::cout << planning::plan_json(from, to, result, scene.wheelchair.turning_radius) << "\n";
   return 0;
 }
 
 int cmd_tour(const Argv& argv) {
-  const Args args(argv, {"sequence", "seed"});
-  const std::string usage = "hrspace tour SCENE --sequence door,ID,ID,... [--seed N]";
+  const Args args(argv, {"sequence", "seed", "planner", "reuse"});
+  const std::string usage =
+      "hrspace tour SCENE --sequence door,ID,ID,... [--seed N] [--planner baseline|proposed]\n"
+      "                   [--reuse LIST]";
   if (args.help()) {
     std::cout << "usage: " << usage
               << "\n\nPlans one tour in the scene's initial layout (paper III-C): from the door's\n"
@@ -116,8 +149,11 @@ int cmd_tour(const Argv& argv) {
                  "object's centre, on its allowed approach sides), legs by the baseline RRT,\n"
                  "branch and bound over the goal poses. Prints one entry of tours.json:\n"
                  "sequence, found, legs (from, to, segments, waypoints every 5 cm), metrics\n"
-                 "(length, rotation, clearance), stats. Exit 0 whether or not a tour is\n"
-                 "found; 2 for a bad scene or an unknown object id.\n";
+                 "(length, rotation, clearance), stats. --planner proposed serves the legs\n"
+                 "through the proposed planner (paper V: decomposition samples and steering,\n"
+                 "legs shared within the tour; --reuse samples,steering,paths to choose).\n"
+                 "Exit 0 whether or not a tour is found; 2 for a bad scene or an unknown\n"
+                 "object id.\n";
     return 0;
   }
   args.expect_positional(1, usage);
@@ -131,8 +167,17 @@ int cmd_tour(const Argv& argv) {
   }
   const geometry::CSpace cspace(scene);
   const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  planning::TourPlanner planner(scene, cspace, {}, seed);
+  const auto reuse = planner_option(args, "samples,steering,paths");
+  std::unique_ptr<planning::ReusePlanner> proposed;
+  if (reuse) {
+    proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, planning::TourOptions{},
+                                                        *reuse, seed);
+    proposed->begin_iteration(seed);
+  }
+  planning::TourPlanner planner(scene, cspace, {}, seed,
+                                proposed ? proposed->hooks() : planning::TourHooks{});
   const planning::Tour tour = planner.plan(sequence);
+  if (proposed) proposed->end_iteration();
   std::cout << planning::tour_json(tour) << "\n";
   return 0;
 }

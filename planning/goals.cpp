@@ -75,6 +75,24 @@ Side side_of(const geometry::Object& object, const Pose2& object_pose, Vec2 poin
 std::vector<GoalPose> goal_poses(const geometry::Scene& scene, const geometry::Object& object,
                                  const Pose2& object_pose, const geometry::CSpace& cspace,
                                  const GoalOptions& options) {
+  return place_goal_poses(local_goal_poses(scene, object, options), object_pose, cspace);
+}
+
+std::vector<GoalPose> place_goal_poses(const std::vector<GoalPose>& local, const Pose2& object_pose,
+                                       const geometry::CSpace& cspace) {
+  std::vector<GoalPose> out;
+  out.reserve(local.size());
+  for (const GoalPose& g : local) {
+    const Vec2 world = geometry::to_world(object_pose, g.pose.position());
+    const Pose2 pose{world.x, world.y, geometry::wrap_angle(object_pose.theta + g.pose.theta)};
+    if (!cspace.is_free(pose)) continue;
+    out.push_back({pose, g.side, g.slot});
+  }
+  return out;
+}
+
+std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geometry::Object& object,
+                                       const GoalOptions& options) {
   const Polygon& fp = object.footprint;
   std::vector<GoalPose> out;
   if (fp.size() < 3) return out;
@@ -126,11 +144,7 @@ std::vector<GoalPose> goal_poses(const geometry::Scene& scene, const geometry::O
       const double mid = 0.5 * (lo + hi);
       (clear(mid) ? hi : lo) = mid;
     }
-    const Pose2 local = facing_origin(q, normal, hi);
-    const Vec2 world = geometry::to_world(object_pose, local.position());
-    const Pose2 pose{world.x, world.y, geometry::wrap_angle(object_pose.theta + local.theta)};
-    if (!cspace.is_free(pose)) continue;
-    out.push_back({pose, side, slot});
+    out.push_back({facing_origin(q, normal, hi), side, slot});
   }
   return out;
 }

@@ -29,10 +29,23 @@ struct GoalPose {
 };
 
 //! Goal poses around `object` placed at `object_pose`, collision free in
-//! `cspace` (poses in collision are dropped), in slot order.
+//! `cspace` (poses in collision are dropped), in slot order. Equals
+//! place_goal_poses(local_goal_poses(...), object_pose, cspace).
 std::vector<GoalPose> goal_poses(const geometry::Scene& scene, const geometry::Object& object,
                                  const geometry::Pose2& object_pose, const geometry::CSpace& cspace,
                                  const GoalOptions& options = {});
+
+//! The goal poses of `object` in its own frame (object at the origin,
+//! heading +x), before any collision test: they depend only on the
+//! footprint, the chair and the options, so a planner computes them once
+//! per object and places them wherever the object moves.
+std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geometry::Object& object,
+                                       const GoalOptions& options = {});
+//! `local` goal poses moved with the object to `object_pose`, the ones in
+//! collision in `cspace` dropped.
+std::vector<GoalPose> place_goal_poses(const std::vector<GoalPose>& local,
+                                       const geometry::Pose2& object_pose,
+                                       const geometry::CSpace& cspace);
 
 //! The side of `object` (at `object_pose`) that a chair position lies on:
 //! the side whose outward direction (local ±x, ±y) is closest to the

@@ -50,7 +50,10 @@ TourPlanner::TourPlanner(const geometry::Scene& scene, const CSpace& cspace, Tou
       seed_(seed),
       hooks_(hooks),
       planner_(scene, cspace, options.planner, hooks.planner),
-      validator_(cspace, scene.wheelchair.turning_radius) {}
+      validator_(cspace, scene.wheelchair.turning_radius) {
+  for (const geometry::Object& o : scene.objects)
+    local_goals_.push_back(local_goal_poses(scene, o, options_.goals));
+}
 
 std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {
   if (id == kDoorId) {
@@ -60,8 +63,7 @@ std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {
   }
   const int index = scene_->find_object(id);
   if (index < 0) throw InputError("unknown object id '" + std::string(id) + "' in sequence");
-  return goal_poses(*scene_, scene_->objects[index], cspace_->object_pose(index), *cspace_,
-                    options_.goals);
+  return place_goal_poses(local_goals_[index], cspace_->object_pose(index), *cspace_);
 }
 
 Tour TourPlanner::plan(const std::vector<std::string>& sequence) {

@@ -194,6 +194,9 @@ class TourPlanner {
   TourHooks hooks_;
   LegPlanner planner_;
   MotionValidator validator_;
+  //! local_goal_poses() of every object, computed once (they do not depend
+  //! on where the object stands).
+  std::vector<std::vector<GoalPose>> local_goals_;
 };
 
 //! The RRT seed of one leg: a hash of the tour seed and the key.

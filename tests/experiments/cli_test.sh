@@ -72,5 +72,22 @@ expect_out "rs identical poses" "0,,"
 check "rs zero radius" 2 "$bin" rs --radius 0 --pairs "$tmp/pairs.csv"
 check "rs missing radius" 2 "$bin" rs --pairs "$tmp/pairs.csv"
 
+# plan / tour with either planner; proposed-only options are checked
+bed="$src/scenes/bedroom.json"
+check "plan baseline" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0
+grep -q '"found": *true' "$tmp/out" || { echo "FAIL: plan baseline found no path"; fails=$((fails + 1)); }
+check "plan proposed" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed
+grep -q '"found": *true' "$tmp/out" || { echo "FAIL: plan proposed found no path"; fails=$((fails + 1)); }
+check "plan proposed samples only" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse samples
+check "plan reuse without proposed" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --reuse samples
+expect_err "reuse needs proposed" "--reuse needs --planner proposed"
+check "plan reuse across layouts" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse paths
+expect_err "plan rejects paths" "--reuse: 'paths'"
+check "plan unknown planner" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner fast
+expect_err "unknown planner" "--planner: unknown planner 'fast'"
+check "tour proposed" 0 "$bin" tour "$bed" --sequence door,tv --planner proposed
+grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour proposed printed no tour"; fails=$((fails + 1)); }
+check "tour reuse trees" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse trees
+
 if [ "$fails" -ne 0 ]; then echo "$fails failure(s)"; exit 1; fi
 echo "all CLI checks passed"
