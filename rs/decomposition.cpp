@@ -108,7 +108,7 @@ int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {
     const Pose2 centre{-options_.room_width + (ix + 0.5) * g.cx,
                        -options_.room_depth + (iy + 0.5) * g.cy,
                        -std::numbers::pi + (it + 0.5) * g.ct};
-    w = static_cast<std::uint8_t>(samples_[tree_.nearest(centre)].word);
+    w = static_cast<std::uint8_t>(shortest_word({}, centre, options_.radius).word);
     g.words[cell].store(w, std::memory_order_relaxed);
   }
   return w;

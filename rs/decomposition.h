@@ -10,13 +10,14 @@
 // is an approximation: evaluate() measures how often it is right and what it
 // costs when it is not.
 //
-// Look-up grid (our addition to the paper's "proper data structure"): a
-// nearest-sample search costs microseconds, more than solving all 48 words,
-// so predictions go through a grid over the sampled box (cells of
-// `grid_cell` metres × `grid_angle` radians). A cell holds the word of the
-// sample nearest its centre, filled on first use; later queries in the cell
-// cost one array read. The grid is a coarser Voronoi partition of the same
-// samples: evaluate() measures its accuracy. Filling is thread-safe and
+// Look-up grid (our departure from the paper's kd-tree look-up): a
+// nearest-sample search costs microseconds, more than solving all 48 words
+// once, so predictions go through a grid over the sampled box (cells of
+// `grid_cell` metres × `grid_angle` radians). A cell holds the shortest word
+// at its centre, solved on first use; later queries in the cell cost one
+// array read. It is the same partition by words, sampled on a regular grid
+// instead of adaptively: evaluate() measures its accuracy. Queries outside
+// the box use the nearest adaptive sample. Filling is thread-safe and
 // deterministic (a cell's word depends only on the cell).
 
 #include <cstdint>

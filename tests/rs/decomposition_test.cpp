@@ -102,13 +102,13 @@ TEST(RsDecomposition, PredictedPathIsValidWhenReturnedAndNeverShorterThanExact) 
   EXPECT_GT(returned, 0);
 }
 
-// The look-up grid answers the word of the sample nearest the centre of the
-// query's cell; with the grid off, the sample nearest the query itself. Both
+// The look-up grid answers the shortest word at the centre of the query's
+// cell; with the grid off, the word of the sample nearest the query. Both
 // checked against the kd-tree (itself checked against brute force above) on
 // queries from many start poses, including relative poses outside the
 // sampled box (answered without the grid) and from several threads at once
 // (cells filled concurrently must hold the same words).
-TEST(RsDecomposition, GridAnswersTheSampleNearestItsCellCentre) {
+TEST(RsDecomposition, GridAnswersTheShortestWordAtItsCellCentre) {
   DecompositionOptions o = small_options();
   std::mt19937_64 r1(5), r2(5);
   const Decomposition grid(o, r1);
@@ -152,13 +152,13 @@ TEST(RsDecomposition, GridAnswersTheSampleNearestItsCellCentre) {
     const int it = std::clamp(static_cast<int>((q.theta + pi) / ct), 0, nt - 1);
     const Pose2 centre{-o.room_width + (static_cast<int>(fx) + 0.5) * cx,
                        -o.room_depth + (static_cast<int>(fy) + 0.5) * cy, -pi + (it + 0.5) * ct};
-    EXPECT_EQ(words[i], grid.nearest_word({}, centre)) << i;
-    if (words[i] == grid.nearest_word(a, b)) ++agree_with_query;
+    EXPECT_EQ(words[i], shortest_word({}, centre, o.radius).word) << i;
+    if (words[i] == shortest_word(a, b, o.radius).word) ++agree_with_query;
   }
   EXPECT_GT(inside, 8000);
-  // A cell is 5 cm × 5°: its centre's nearest sample is mostly the query's.
+  // A cell is 5 cm × 5°: its centre's word is mostly the query's own.
   EXPECT_GT(agree_with_query, 0.8 * inside);
-  std::printf("grid: %d of %d in-box queries answer the query's own nearest word (%.1f%%)\n",
+  std::printf("grid: %d of %d in-box queries answer the query's own shortest word (%.1f%%)\n",
               agree_with_query, inside, 100.0 * agree_with_query / inside);
 }
 
