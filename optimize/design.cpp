@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <random>
+#include <stdexcept>
 
 #include "geometry/polygon_ops.h"
 #include "optimize/thread_pool.h"
@@ -75,6 +76,67 @@ std::string layout_violation(const geometry::Scene& scene) {
   return "";
 }
 
+namespace {
+
+//! The M tours of one layout, planned in parallel (baseline or proposed):
+//! shared by design() and replay_planning().
+class TourRound {
+ public:
+  TourRound(const geometry::Scene& scene, const DesignOptions& options,
+            const std::vector<Sequence>& sequences)
+      : work_(scene),
+        cspace_(work_, options.cspace),
+        options_(options),
+        sequences_(&sequences),
+        pool_(options.threads),
+        tours_(sequences.size()),
+        invalidated_(sequences.size(), 0) {
+    if (options.proposed)
+      reuse_ = std::make_unique<planning::ReusePlanner>(work_, cspace_, options.tour, options.reuse,
+                                                        options.seed);
+    const planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
+    for (std::size_t k = 0; k < sequences.size(); ++k)
+      planners_.push_back(std::make_unique<planning::TourPlanner>(
+          work_, cspace_, options.tour, tour_seed(options.seed, 0, static_cast<int>(k)), hooks));
+  }
+
+  geometry::Scene& work() { return work_; }
+  geometry::CSpace& cspace() { return cspace_; }
+  int threads() const { return pool_.size(); }
+  std::vector<planning::Tour>& tours() { return tours_; }
+  planning::ReusePlanner* reuse() { return reuse_.get(); }
+
+  //! Plans round `iteration` in the current layout; returns the tours the
+  //! re-certification dropped. `legs` gets the proposed planner's counts.
+  int plan(int iteration, std::optional<planning::ReuseCounters>& legs) {
+    const int m = static_cast<int>(tours_.size());
+    // The proposed planner's legs derive from (seed, iteration), not the tour.
+    if (reuse_) reuse_->begin_iteration(tour_seed(options_.seed, iteration, m));
+    pool_.run(m, [&](int k) {
+      planners_[k]->set_seed(tour_seed(options_.seed, iteration, k));
+      tours_[k] = planners_[k]->plan((*sequences_)[k].nodes);
+      invalidated_[k] = recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k]) ? 0 : 1;
+    });
+    if (reuse_) legs = reuse_->end_iteration();
+    int dropped = 0;
+    for (int k = 0; k < m; ++k) dropped += invalidated_[k];
+    return dropped;
+  }
+
+ private:
+  geometry::Scene work_;  // poses follow the annealer's current layout
+  geometry::CSpace cspace_;
+  DesignOptions options_;
+  const std::vector<Sequence>* sequences_;
+  std::unique_ptr<planning::ReusePlanner> reuse_;
+  std::vector<std::unique_ptr<planning::TourPlanner>> planners_;
+  ThreadPool pool_;
+  std::vector<planning::Tour> tours_;
+  std::vector<int> invalidated_;
+};
+
+}  // namespace
+
 DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
                     const std::atomic<bool>* stop,
                     const std::function<void(const DesignStep&)>& progress) {
@@ -82,21 +144,13 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
   DesignResult result;
   result.sequences = scene_sequences(scene);
   const CostModel model(scene, result.sequences);
-  const int m = static_cast<int>(result.sequences.size());
 
-  geometry::Scene work = scene;  // poses follow the annealer's current layout
-  geometry::CSpace cspace(work, options.cspace);
-  std::unique_ptr<planning::ReusePlanner> reuse;
-  if (options.proposed)
-    reuse = std::make_unique<planning::ReusePlanner>(work, cspace, options.tour, options.reuse,
-                                                     options.seed);
-  const planning::TourHooks hooks = reuse ? reuse->hooks() : planning::TourHooks{};
-  std::vector<std::unique_ptr<planning::TourPlanner>> planners;
-  for (int k = 0; k < m; ++k)
-    planners.push_back(std::make_unique<planning::TourPlanner>(
-        work, cspace, options.tour, tour_seed(options.seed, 0, k), hooks));
-  ThreadPool pool(options.threads);
-  result.threads = pool.size();
+  TourRound round(scene, options, result.sequences);
+  geometry::Scene& work = round.work();
+  geometry::CSpace& cspace = round.cspace();
+  planning::ReusePlanner* reuse = round.reuse();
+  std::vector<planning::Tour>& tours = round.tours();
+  result.threads = round.threads();
 
   std::vector<Pose2> poses;
   std::vector<bool> movable;
@@ -106,21 +160,16 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
   }
 
   int iteration = 0;  // 0: the initial layout; proposals count from 1
-  std::vector<planning::Tour> tours(m);
-  std::vector<int> invalidated(m, 0);
   double planning_ms = 0.0;
   std::optional<planning::ReuseCounters> iteration_legs;
   auto plan_all = [&] {
     const auto p0 = Clock::now();
-    // The proposed planner's legs derive from (seed, iteration), not the tour.
-    if (reuse) reuse->begin_iteration(tour_seed(options.seed, iteration, m));
-    pool.run(m, [&](int k) {
-      planners[k]->set_seed(tour_seed(options.seed, iteration, k));
-      tours[k] = planners[k]->plan(result.sequences[k].nodes);
-      invalidated[k] = recheck_tour(cspace, scene.wheelchair.turning_radius, tours[k]) ? 0 : 1;
-    });
-    if (reuse) iteration_legs = reuse->end_iteration();
-    for (int k = 0; k < m; ++k) result.tours_invalidated += invalidated[k];
+    if (options.layouts_out) {
+      options.layouts_out->emplace_back();
+      for (int i = 0; i < cspace.object_count(); ++i)
+        options.layouts_out->back().push_back(cspace.object_pose(i));
+    }
+    result.tours_invalidated += round.plan(iteration, iteration_legs);
     planning_ms = 1e3 * seconds_since(p0);
     result.time_planning_s += planning_ms / 1e3;
   };
@@ -235,6 +284,38 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
   }
   result.time_total_s = seconds_since(t0);
   return result;
+}
+
+ReplayResult replay_planning(const geometry::Scene& scene,
+                             const std::vector<std::vector<Pose2>>& layouts,
+                             const DesignOptions& options) {
+  ReplayResult out;
+  const std::vector<Sequence> sequences = scene_sequences(scene);
+  const auto t0 = Clock::now();
+  TourRound round(scene, options, sequences);
+  out.setup_s = seconds_since(t0);
+  std::optional<planning::ReuseCounters> legs;
+  for (std::size_t r = 0; r < layouts.size(); ++r) {
+    const auto& poses = layouts[r];
+    if (static_cast<int>(poses.size()) != round.cspace().object_count())
+      throw std::invalid_argument("replay_planning: layout size differs from the scene's objects");
+    for (int i = 0; i < round.cspace().object_count(); ++i) {
+      if (round.cspace().object_pose(i) == poses[i]) continue;
+      round.work().objects[i].pose = poses[i];
+      round.cspace().move_object(i, poses[i]);
+    }
+    const auto p0 = Clock::now();
+    out.tours_invalidated += round.plan(static_cast<int>(r), legs);
+    out.planning_s += seconds_since(p0);
+    for (const planning::Tour& t : round.tours()) {
+      if (!t.found) continue;
+      ++out.tours_found;
+      out.tour_length += t.metrics.length;
+    }
+  }
+  out.layouts = static_cast<int>(layouts.size());
+  if (round.reuse()) out.counters = round.reuse()->totals();
+  return out;
 }
 
 }  // namespace hrs::optimize

@@ -50,6 +50,9 @@ struct DesignOptions {
   //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
   bool proposed = false;
   planning::ReuseOptions reuse;  //!< its techniques (all on by default)
+  //! When set, the object poses of every planned layout are appended here,
+  //! in planning order (the input of replay_planning()).
+  std::vector<std::vector<Pose2>>* layouts_out = nullptr;
 };
 
 //! One iteration of a design run (report.json "trace").
@@ -97,6 +100,25 @@ std::string object_violation(const geometry::Scene& scene, int index);
 DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
                     const std::atomic<bool>* stop = nullptr,
                     const std::function<void(const DesignStep&)>& progress = {});
+
+//! A planner-only run over a fixed sequence of layouts.
+struct ReplayResult {
+  int layouts = 0;
+  double planning_s = 0.0;  //!< wall time of planning the M tours of every layout
+  double setup_s = 0.0;     //!< building the C-space and planners (the decomposition)
+  long tours_found = 0;     //!< found tours, summed over the layouts
+  double tour_length = 0.0;  //!< their path lengths summed (metres)
+  int tours_invalidated = 0;
+  planning::ReuseCounters counters;  //!< the proposed planner's
+};
+
+//! Plans the M tours of each layout in `layouts` (object poses, e.g. a
+//! design run's `layouts_out`) in order, as design() would, with the planner
+//! of `options` (baseline or proposed), without annealing: the same planning
+//! problems for every planner, so their times and tours compare directly.
+ReplayResult replay_planning(const geometry::Scene& scene,
+                             const std::vector<std::vector<Pose2>>& layouts,
+                             const DesignOptions& options);
 
 //! Pieces (metres) in which recheck_tour() certifies each leg.
 inline constexpr double kRecheckPiece = 0.05;

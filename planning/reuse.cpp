@@ -53,7 +53,7 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 ReuseOptions ReuseOptions::none() {
   ReuseOptions o;
-  o.samples = o.steering = o.paths = o.trees = o.failures = false;
+  o.samples = o.steering = o.paths = o.trees = o.failures = o.shortcuts = false;
   return o;
 }
 
@@ -75,10 +75,12 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
       o.trees = true;
     } else if (name == "failures") {
       o.failures = true;
+    } else if (name == "shortcuts") {
+      o.shortcuts = true;
     } else {
       throw InputError(
           "--reuse: unknown technique '" + std::string(name) +
-          "' (all, none, or a comma list of samples, steering, paths, trees, failures)");
+          "' (all, none, or a comma list of samples, steering, paths, trees, failures, shortcuts)");
     }
     start = end + 1;
   }
@@ -97,6 +99,7 @@ std::string ReuseOptions::names() const {
   add(paths, "paths");
   add(trees, "trees");
   add(failures, "failures");
+  add(shortcuts, "shortcuts");
   return out.empty() ? "none" : out;
 }
 
@@ -135,6 +138,44 @@ rs::Path DecompositionSteering::path(const Pose2& from, const Pose2& to, double 
 }
 
 // ---- §V-B -------------------------------------------------------------------
+
+rs::Path shorten_path(const Pose2& start, const rs::Path& path, MotionValidator& validator,
+                      double step) {
+  // Poses along the path and their arc lengths.
+  std::vector<Pose2> pose{start};
+  std::vector<double> at{0.0};
+  Pose2 p = start;
+  double s = 0.0;
+  for (const rs::Segment& seg : path.segments) {
+    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / step - 1e-9)));
+    const rs::Segment part{seg.steer, seg.gear, seg.length / pieces};
+    for (int i = 0; i < pieces; ++i) {
+      p = rs::advance(p, part, path.radius);
+      s += part.length;
+      pose.push_back(p);
+      at.push_back(s);
+    }
+  }
+  const int n = static_cast<int>(pose.size()) - 1;
+  if (n < 2) return path;
+  rs::Path out{{}, path.radius};
+  int i = 0;
+  while (i < n) {
+    int next = i + 1;
+    rs::Path piece = subpath(path, at[i], at[i + 1]);
+    for (int j = n; j > i + 1; j = i + (j - i) / 2) {
+      rs::Path direct = rs::shortest_path(pose[i], pose[j], path.radius);
+      if (direct.length() < at[j] - at[i] - 1e-3 && validator.path_free(pose[i], direct)) {
+        next = j;
+        piece = std::move(direct);
+        break;
+      }
+    }
+    for (const rs::Segment& seg : piece.segments) append_segment(out.segments, seg);
+    i = next;
+  }
+  return out;
+}
 
 Pose2 relative_pose(const Pose2& a, const Pose2& b) {
   const double c = std::cos(a.theta), s = std::sin(a.theta);
@@ -432,7 +473,10 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   }
   if (options_.paths && options_.repair) {
     if (std::optional<LegOutcome> r = repair(key, from, to, seed, planner)) {
-      if (r->found) return *std::move(r);
+      if (r->found) {
+        if (options_.shortcuts) r->path = shortened(from, r->path, r->stats);
+        return *std::move(r);
+      }
       add_stats(out.stats, r->stats);
     }
   }
@@ -456,7 +500,14 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   }
   if (options_.trees) slot.grown = std::move(tree);
   out.found = r.found;
-  if (r.found) out.path = std::move(r.path);
+  if (r.found) out.path = options_.shortcuts ? shortened(from, r.path, out.stats) : std::move(r.path);
+  return out;
+}
+
+rs::Path ReusePlanner::shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const {
+  MotionValidator validator(*cspace_, radius_);
+  rs::Path out = shorten_path(from, path, validator, tour_.planner.step_length);
+  stats.collision_checks += validator.checks();
   return out;
 }
 

@@ -49,6 +49,10 @@ struct ReuseOptions {
   //! reach of every pose that RRT examined (then the same run would make the
   //! same collision queries with the same answers: a proof, not a guess).
   bool failures = true;
+  //! Beyond the paper: every path the planner stores (fresh or repaired) is
+  //! shortened first (shorten_path), so that reused paths are not the
+  //! RRT's detours: without it, reuse trades tour length for time.
+  bool shortcuts = true;
   //! §V-B: a stored path whose ends moved apart is repaired (valid part kept,
   //! gap re-planned) before a fresh plan is tried.
   bool repair = true;
@@ -61,11 +65,11 @@ struct ReuseOptions {
   int decomposition_stop = 100;      //!< consecutive agreeing samples ending it (paper: 100)
 
   //! True when at least one technique is on; all off is the baseline exactly.
-  bool any() const { return samples || steering || paths || trees || failures; }
+  bool any() const { return samples || steering || paths || trees || failures || shortcuts; }
   //! Every technique off.
   static ReuseOptions none();
   //! Parses "all", "none" or a comma list of samples, steering, paths, trees,
-  //! failures (the ones listed are on); hrs::InputError otherwise.
+  //! failures, shortcuts (the ones listed are on); hrs::InputError otherwise.
   static ReuseOptions parse(std::string_view list);
   //! The comma list of the techniques on ("none" when none).
   std::string names() const;
@@ -95,6 +99,15 @@ class DecompositionSteering final : public Steering {
  private:
   const rs::Decomposition* decomposition_;
 };
+
+//! A path from `start` to the same end that is at most as long as `path`:
+//! greedy shortcuts between poses along it (every `step` metres and at
+//! segment borders), each replacement the exact shortest RS path between
+//! the two poses, kept only when shorter by more than 1 mm and free by the
+//! continuous checks of `validator`. From each pose the farthest pose is
+//! tried first, then halfway closer, down to the next pose. Deterministic.
+rs::Path shorten_path(const Pose2& start, const rs::Path& path, MotionValidator& validator,
+                      double step);
 
 //! `b` in the frame of `a` (a's position at the origin, heading +x).
 Pose2 relative_pose(const Pose2& a, const Pose2& b);
@@ -231,6 +244,8 @@ class ReusePlanner final : public LegProvider {
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                       LegPlanner& planner, Slot& slot) const;
+  //! shorten_path() of a found path, its checks counted into `stats`.
+  rs::Path shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const;
   std::optional<LegOutcome> repair(const LegKey& key, const Pose2& from, const Pose2& to,
                                    std::uint64_t seed, LegPlanner& planner) const;
 

@@ -18,6 +18,7 @@
 #include "planning/motion_validator.h"
 #include "planning/nearest.h"
 #include "planning/path_ops.h"
+#include "planning/reuse.h"
 #include "planning/rrt.h"
 #include "planning/tour.h"
 #include "tests/planning/support.h"
@@ -408,6 +409,48 @@ TEST(LegPlanner, SameSeedSamePathAndThreadsDoNotMatter) {
         r.stats.iterations != seq[i].stats.iterations || r.path.segments != seq[i].path.segments;
   }
   EXPECT_GT(differ, 0);
+}
+
+// shorten_path (the proposed planner's shortcuts): on RRT legs of every
+// scene the result ends where the leg ends, is never longer, and is free by
+// the exact reference every 1 mm; and it shortens most detours.
+TEST(ShortenPath, SameEndsNeverLongerAndFreeByTheReference) {
+  int legs = 0, shorter = 0;
+  double before = 0, after = 0;
+  for (const std::string& file : testing::planning_scene_files()) {
+    const geometry::Scene scene = geometry::load_scene(file);
+    const geometry::CSpace cspace(scene);
+    const double r = scene.wheelchair.turning_radius;
+    const testing::ReferenceChecker reference(scene);
+    LegPlanner planner(scene, cspace);
+    MotionValidator v(cspace, r);
+    std::mt19937_64 rng(21);
+    for (int i = 0; i < 40; ++i) {
+      const Pose2 a = testing::random_free_pose(scene, cspace, rng);
+      const Pose2 b = testing::random_free_pose(scene, cspace, rng);
+      const LegResult leg = planner.plan(a, b, 100 + i);
+      if (!leg.found) continue;
+      ++legs;
+      const rs::Path p = shorten_path(a, leg.path, v, 0.25);
+      const Pose2 end = final_pose(a, p);
+      ASSERT_LT(std::hypot(end.x - b.x, end.y - b.y), 1e-6) << file;
+      ASSERT_LT(std::abs(geometry::wrap_angle(end.theta - b.theta)), 1e-6) << file;
+      ASSERT_LE(p.length(), leg.path.length() + 1e-9) << file;
+      before += leg.path.length();
+      after += p.length();
+      if (p.length() < leg.path.length() - 1e-3) ++shorter;
+      for (const Pose2& q : rs::sample(a, p, 0.001)) {
+        if (!reference.pose_free(q)) {
+          ADD_FAILURE() << file << ": shortened path in collision at " << q.x << "," << q.y;
+          break;
+        }
+      }
+    }
+  }
+  EXPECT_GT(legs, 100);
+  EXPECT_GT(shorter, legs / 4) << "shortcuts shortened almost nothing";
+  std::printf("shorten_path: %d of %d legs shorter, total length %.1f m -> %.1f m\n", shorter, legs,
+              before, after);
 }
 
 }  // namespace
