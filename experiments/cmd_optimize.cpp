@@ -58,6 +58,7 @@ constexpr const char* kDesignUsage =
     "                    trees     RRT trees kept while their root barely moves (§V-C)\n"
     "                    failures  a failed leg is not re-planned while no object moved\n"
     "                              within reach of its RRT's nodes (beyond the paper)\n"
+    "                    shortcuts every path stored is shortened first (beyond the paper)\n"
     "Ctrl-C stops after the current iteration, writes the best design so far, exits 130;\n"
     "a second Ctrl-C quits at once.\n";
 

@@ -42,7 +42,8 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   EXPECT_FALSE(ReuseOptions::parse("none").any());
   const ReuseOptions o = ReuseOptions::parse("paths,trees");
   EXPECT_TRUE(o.paths && o.trees);
-  EXPECT_FALSE(o.samples || o.steering || o.failures);
+  EXPECT_FALSE(o.samples || o.steering || o.failures || o.shortcuts);
+  EXPECT_TRUE(ReuseOptions::parse("shortcuts").shortcuts);
   EXPECT_EQ(o.names(), "paths,trees");
   EXPECT_EQ(ReuseOptions::none().names(), "none");
   EXPECT_THROW(ReuseOptions::parse("paths,bogus"), InputError);
