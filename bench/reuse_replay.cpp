@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
 #include "planning/reuse.h"
@@ -37,14 +38,6 @@ using Layouts = std::vector<std::vector<geometry::Pose2>>;
 int env_int(const char* name, int fallback) {
   const char* v = std::getenv(name);
   return v ? std::atoi(v) : fallback;
-}
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
 }
 
 struct Recording {
@@ -69,7 +62,7 @@ void replay(benchmark::State& state, const Recording* rec, const std::string& co
       found += r.tours_found;
       length += r.tour_length;
       layouts += r.layouts;
-      tours += static_cast<long>(r.layouts) * 10;
+      tours += r.tours_total;
       legs += r.counters;
     }
     state.SetIterationTime(planning);
@@ -94,7 +87,7 @@ int main(int argc, char** argv) {
   const int seeds = env_int("HRSPACE_REPLAY_SEEDS", 2);
   const int threads = env_int("HRSPACE_REPLAY_THREADS", 2);
   const char* rooms_env = std::getenv("HRSPACE_REPLAY_ROOMS");
-  const std::vector<std::string> rooms = split(rooms_env ? rooms_env : "bedroom,office,living_room");
+  const std::vector<std::string> rooms = bench::split_list(rooms_env ? rooms_env : "bedroom,office,living_room");
   const std::vector<std::string> configs{"baseline", "all",      "paths",    "trees",
                                          "samples",  "steering", "failures", "shortcuts"};
   static std::map<std::string, Recording> recordings;

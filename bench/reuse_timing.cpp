@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/bench_util.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
 #include "planning/reuse.h"
@@ -27,14 +28,6 @@
 namespace {
 
 using namespace hrs;
-
-std::vector<std::string> split(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  for (std::string item; std::getline(in, item, ',');)
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
 
 struct Stat {
   std::vector<double> v;
@@ -77,11 +70,11 @@ int main(int argc, char** argv) {
          "tours_found,legs_database,legs_repaired,legs_planned,legs_failed,failures_reused\n";
   // (room, config) -> stats
   std::map<std::pair<std::string, std::string>, std::map<std::string, Stat>> stats;
-  for (const std::string& room : split(opt["rooms"])) {
+  for (const std::string& room : bench::split_list(opt["rooms"])) {
     const geometry::Scene scene =
         geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + room + ".json");
     for (int seed = 1; seed <= seeds; ++seed) {
-      for (const std::string& config : split(opt["configs"])) {
+      for (const std::string& config : bench::split_list(opt["configs"])) {
         optimize::DesignOptions o;
         o.seed = static_cast<std::uint64_t>(seed);
         o.iterations = iterations;

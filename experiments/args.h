@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "planning/reuse.h"
+
 namespace hrs::cli {
 
 class Args {
@@ -51,5 +53,11 @@ std::string read_input(const std::string& path);
 //! field when a value is malformed.
 std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::size_t columns,
                                                   const std::string& label);
+
+//! --planner baseline|proposed and --reuse LIST of design, plan and tour:
+//! nullopt for the baseline, else the proposed planner's techniques (default
+//! `allowed`; a technique outside `allowed` is refused: it only acts across
+//! the layouts of a design). hrs::InputError on a bad value.
+std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed);
 
 }  // namespace hrs::cli

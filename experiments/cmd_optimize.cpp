@@ -80,12 +80,8 @@ int cmd_design(const Argv& argv) {
   args.expect_positional(1, "hrspace design SCENE --out DIR [options] (see --help)");
   const auto out = args.get("out");
   if (!out) throw InputError("--out DIR is required (see --help)");
-  const std::string planner = args.get_or("planner", "baseline");
-  if (planner != "baseline" && planner != "proposed")
-    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
-  if (args.get("reuse") && planner != "proposed")
-    throw InputError("--reuse needs --planner proposed");
-  const planning::ReuseOptions reuse = planning::ReuseOptions::parse(args.get_or("reuse", "all"));
+  const std::optional<planning::ReuseOptions> reuse = planner_option(args, "all");
+  const std::string planner = reuse ? "proposed" : "baseline";
   const long seed = args.integer("seed", 1, 0, 1L << 53);
   const long iterations = args.integer("iterations", 700, 0, 100000000);
   const long designs = args.integer("designs", 1, 1, 1000);
@@ -110,8 +106,8 @@ int cmd_design(const Argv& argv) {
     options.seed = static_cast<std::uint64_t>(seed + d);
     options.iterations = static_cast<int>(iterations);
     options.threads = static_cast<int>(threads);
-    options.proposed = planner == "proposed";
-    options.reuse = reuse;
+    options.proposed = reuse.has_value();
+    if (reuse) options.reuse = *reuse;
     const auto t0 = std::chrono::steady_clock::now();
     auto progress = [&](const optimize::DesignStep& step) {
       if (!tty) return;

@@ -72,24 +72,6 @@ std::vector<std::string> split_ids(const std::string& text) {
   return out;
 }
 
-//! --planner / --reuse of plan and tour: null for the baseline, else the
-//! proposed planner's techniques (only `allowed` make sense for one query).
-std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed) {
-  const std::string planner = args.get_or("planner", "baseline");
-  if (planner != "baseline" && planner != "proposed")
-    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
-  if (args.get("reuse") && planner != "proposed") throw InputError("--reuse needs --planner proposed");
-  if (planner == "baseline") return std::nullopt;
-  const std::string list = args.get_or("reuse", allowed);
-  planning::ReuseOptions o = planning::ReuseOptions::parse(list);
-  const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
-  if ((o.paths && !ok.paths) || (o.trees && !ok.trees) || (o.failures && !ok.failures))
-    throw InputError("--reuse: '" + list + "': only " + allowed +
-                     " act within one query (paths, trees and failures reuse work across the "
-                     "layouts of a design: see hrspace design --planner proposed)");
-  return o;
-}
-
 }  // namespace
 
 int cmd_plan(const Argv& argv) {

@@ -308,6 +308,7 @@ ReplayResult replay_planning(const geometry::Scene& scene,
     out.tours_invalidated += round.plan(static_cast<int>(r), legs);
     out.planning_s += seconds_since(p0);
     for (const planning::Tour& t : round.tours()) {
+      ++out.tours_total;
       if (!t.found) continue;
       ++out.tours_found;
       out.tour_length += t.metrics.length;

@@ -106,6 +106,7 @@ struct ReplayResult {
   int layouts = 0;
   double planning_s = 0.0;  //!< wall time of planning the M tours of every layout
   double setup_s = 0.0;     //!< building the C-space and planners (the decomposition)
+  long tours_total = 0;     //!< tours asked for: layouts × M
   long tours_found = 0;     //!< found tours, summed over the layouts
   double tour_length = 0.0;  //!< their path lengths summed (metres)
   int tours_invalidated = 0;

@@ -35,19 +35,7 @@ bool MotionValidator::path_free(const Pose2& start, const rs::Path& path) {
 }
 
 double MotionValidator::free_prefix(const Pose2& start, const rs::Path& path, double piece) {
-  double done = 0.0;
-  Pose2 p = start;
-  for (const rs::Segment& seg : path.segments) {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / piece - 1e-9)));
-    const double len = seg.length / pieces;
-    for (int i = 0; i < pieces; ++i) {
-      const rs::Segment part{seg.steer, seg.gear, len};
-      if (!segment_free(p, part)) return done;
-      p = rs::advance(p, part, radius_);
-      done += len;
-    }
-  }
-  return done;
+  return certified_prefix(start, path, piece, 0);  // no bisection: the plain cut
 }
 
 bool MotionValidator::certified(const Pose2& start, const rs::Segment& part, int depth) {

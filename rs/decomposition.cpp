@@ -87,18 +87,22 @@ Pose2 Decomposition::relative(const Pose2& from, const Pose2& to) const {
 }
 
 int Decomposition::nearest_word(const Pose2& from, const Pose2& to) const {
-  return samples_[tree_.nearest(relative(from, to))].word;
+  return nearest_sample_word(relative(from, to));
+}
+
+int Decomposition::nearest_sample_word(const Pose2& q) const {
+  return samples_[tree_.nearest(q)].word;
 }
 
 int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {
   const Pose2 q = relative(from, to);
-  if (!grid_) return samples_[tree_.nearest(q)].word;
+  if (!grid_) return nearest_sample_word(q);
   const Grid& g = *grid_;
   const double fx = (q.x + options_.room_width) / g.cx;
   const double fy = (q.y + options_.room_depth) / g.cy;
   const double ft = (q.theta + std::numbers::pi) / g.ct;
   if (!(fx >= 0.0 && fx < g.nx && fy >= 0.0 && fy < g.ny))  // outside the box (or NaN)
-    return samples_[tree_.nearest(q)].word;
+    return nearest_sample_word(q);
   const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
   const int it = std::clamp(static_cast<int>(ft), 0, g.nt - 1);
   const std::size_t cell = (static_cast<std::size_t>(it) * g.ny + iy) * g.nx + ix;

@@ -98,6 +98,8 @@ class Decomposition {
 
  private:
   Pose2 relative(const Pose2& from, const Pose2& to) const;
+  //! Word of the sample nearest to the relative pose `q`.
+  int nearest_sample_word(const Pose2& q) const;
   Pose2 uniform(std::mt19937_64& rng) const;
   struct Grid;
 
