@@ -45,8 +45,7 @@ struct Recording {
   std::vector<Layouts> runs;  //!< one layout sequence per recorded seed
 };
 
-void replay(benchmark::State& state, const Recording* rec, const std::string& config,
-            int threads) {
+void replay(benchmark::State& state, const Recording* rec, const std::string& config, int threads) {
   for (auto _ : state) {
     double planning = 0.0, length = 0.0;
     long found = 0, layouts = 0, tours = 0;
@@ -68,13 +67,16 @@ void replay(benchmark::State& state, const Recording* rec, const std::string& co
     state.SetIterationTime(planning);
     state.counters["layouts"] = static_cast<double>(layouts);
     state.counters["ms_per_layout"] = 1e3 * planning / static_cast<double>(layouts);
-    state.counters["tours_found_%"] = 100.0 * static_cast<double>(found) / static_cast<double>(tours);
+    state.counters["tours_found_%"] =
+        100.0 * static_cast<double>(found) / static_cast<double>(tours);
     state.counters["mean_tour_m"] = found > 0 ? length / static_cast<double>(found) : 0.0;
     if (config != "baseline") {
       state.counters["legs_db"] = static_cast<double>(legs.legs_database);
       state.counters["legs_repaired"] = static_cast<double>(legs.legs_repaired);
       state.counters["legs_planned"] = static_cast<double>(legs.legs_planned);
       state.counters["legs_failed"] = static_cast<double>(legs.legs_failed);
+      state.counters["legs_proven"] = static_cast<double>(legs.legs_proven);
+      state.counters["proof_s"] = 1e-3 * legs.proof_ms;
     }
   }
 }
@@ -87,9 +89,12 @@ int main(int argc, char** argv) {
   const int seeds = env_int("HRSPACE_REPLAY_SEEDS", 2);
   const int threads = env_int("HRSPACE_REPLAY_THREADS", 2);
   const char* rooms_env = std::getenv("HRSPACE_REPLAY_ROOMS");
-  const std::vector<std::string> rooms = bench::split_list(rooms_env ? rooms_env : "bedroom,office,living_room");
-  const std::vector<std::string> configs{"baseline", "all",      "paths",    "trees",
-                                         "samples",  "steering", "failures", "shortcuts"};
+  const std::vector<std::string> rooms =
+      bench::split_list(rooms_env ? rooms_env : "bedroom,office,living_room");
+  // "all" (the defaults), with the opt-in proofs, then each technique alone.
+  const std::vector<std::string> configs{"baseline",  "all",     "all,proofs", "paths",
+                                         "trees",     "samples", "steering",   "failures",
+                                         "shortcuts", "proofs"};
   static std::map<std::string, Recording> recordings;
   for (const std::string& room : rooms) {
     Recording& rec = recordings[room];

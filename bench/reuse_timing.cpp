@@ -67,7 +67,8 @@ int main(int argc, char** argv) {
   const int threads = std::atoi(opt["threads"].c_str());
   std::ofstream csv(opt["out"]);
   csv << "room,config,seed,iterations,threads,total_s,planning_s,cost_initial,cost_final,"
-         "tours_found,legs_database,legs_repaired,legs_planned,legs_failed,failures_reused\n";
+         "tours_found,legs_database,legs_repaired,legs_planned,legs_failed,failures_reused,legs_"
+         "proven\n";
   // (room, config) -> stats
   std::map<std::pair<std::string, std::string>, std::map<std::string, Stat>> stats;
   for (const std::string& room : bench::split_list(opt["rooms"])) {
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
             << r.time_total_s << ',' << r.time_planning_s << ',' << r.initial.total() << ','
             << r.final.total() << ',' << r.final.tours_found << ',' << c.legs_database << ','
             << c.legs_repaired << ',' << c.legs_planned << ',' << c.legs_failed << ','
-            << c.failures_reused << '\n'
+            << c.failures_reused << ',' << c.legs_proven << '\n'
             << std::flush;
         auto& s = stats[{room, config}];
         s["total"].v.push_back(r.time_total_s);

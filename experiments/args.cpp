@@ -156,19 +156,30 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::
   return rows;
 }
 
-std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed) {
+std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed,
+                                                     const std::string& fallback) {
   const std::string planner = args.get_or("planner", "baseline");
   if (planner != "baseline" && planner != "proposed")
     throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
-  if (args.get("reuse") && planner != "proposed") throw InputError("--reuse needs --planner proposed");
+  if (args.get("reuse") && planner != "proposed")
+    throw InputError("--reuse needs --planner proposed");
   if (planner == "baseline") return std::nullopt;
-  const std::string list = args.get_or("reuse", allowed);
+  const std::string list = args.get_or("reuse", fallback);
   planning::ReuseOptions o = planning::ReuseOptions::parse(list);
   const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
-  if ((o.paths && !ok.paths) || (o.trees && !ok.trees) || (o.failures && !ok.failures))
-    throw InputError("--reuse: '" + list + "': only " + allowed +
-                     " act within one query (paths, trees and failures reuse work across the "
-                     "layouts of a design: see hrspace design --planner proposed)");
+  planning::ReuseOptions extra = planning::ReuseOptions::none();
+  extra.samples = o.samples && !ok.samples;
+  extra.steering = o.steering && !ok.steering;
+  extra.paths = o.paths && !ok.paths;
+  extra.trees = o.trees && !ok.trees;
+  extra.failures = o.failures && !ok.failures;
+  extra.shortcuts = o.shortcuts && !ok.shortcuts;
+  extra.proofs = o.proofs && !ok.proofs;
+  if (extra.any())
+    throw InputError("--reuse: '" + list + "': " + extra.names() +
+                     " would do nothing here; this command takes " + allowed +
+                     " (the others reuse work across the layouts of a design: see hrspace "
+                     "design --planner proposed)");
   return o;
 }
 

@@ -55,9 +55,10 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::
                                                   const std::string& label);
 
 //! --planner baseline|proposed and --reuse LIST of design, plan and tour:
-//! nullopt for the baseline, else the proposed planner's techniques (default
-//! `allowed`; a technique outside `allowed` is refused: it only acts across
-//! the layouts of a design). hrs::InputError on a bad value.
-std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed);
+//! nullopt for the baseline, else the proposed planner's techniques
+//! (`fallback` without --reuse; a technique outside `allowed` is refused: it
+//! would do nothing in this command). hrs::InputError on a bad value.
+std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed,
+                                                     const std::string& fallback);
 
 }  // namespace hrs::cli

@@ -59,6 +59,10 @@ constexpr const char* kDesignUsage =
     "                    failures  a failed leg is not re-planned while no object moved\n"
     "                              within reach of its RRT's nodes (beyond the paper)\n"
     "                    shortcuts every path stored is shortened first (beyond the paper)\n"
+    "                    proofs    opt-in, not in all: a leg still unplanned after 300 RRT\n"
+    "                              iterations whose ends a certified grid separates fails\n"
+    "                              at once (beyond the paper; rarely pays, docs/planner.md)\n"
+    "                  e.g. --reuse all,proofs\n"
     "Ctrl-C stops after the current iteration, writes the best design so far, exits 130;\n"
     "a second Ctrl-C quits at once.\n";
 
@@ -80,7 +84,7 @@ int cmd_design(const Argv& argv) {
   args.expect_positional(1, "hrspace design SCENE --out DIR [options] (see --help)");
   const auto out = args.get("out");
   if (!out) throw InputError("--out DIR is required (see --help)");
-  const std::optional<planning::ReuseOptions> reuse = planner_option(args, "all");
+  const std::optional<planning::ReuseOptions> reuse = planner_option(args, "all,proofs", "all");
   const std::string planner = reuse ? "proposed" : "baseline";
   const long seed = args.integer("seed", 1, 0, 1L << 53);
   const long iterations = args.integer("iterations", 700, 0, 100000000);

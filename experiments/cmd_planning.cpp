@@ -107,7 +107,7 @@ int cmd_plan(const Argv& argv) {
   options.step_length = args.number("step", options.step_length);
   if (!(options.step_length > 0.0)) throw InputError("--step: must be > 0");
   const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  const auto reuse = planner_option(args, "samples,steering");
+  const auto reuse = planner_option(args, "samples,steering", "samples,steering");
   planning::TourOptions tour;
   tour.planner = options;
   std::unique_ptr<planning::ReusePlanner> proposed;
@@ -133,7 +133,8 @@ int cmd_tour(const Argv& argv) {
                  "sequence, found, legs (from, to, segments, waypoints every 5 cm), metrics\n"
                  "(length, rotation, clearance), stats. --planner proposed serves the legs\n"
                  "through the proposed planner (paper V: decomposition samples and steering,\n"
-                 "legs shared within the tour; --reuse samples,steering,paths to choose).\n"
+                 "legs shared within the tour; --reuse to choose among samples, steering,\n"
+                 "paths, shortcuts and proofs).\n"
                  "Exit 0 whether or not a tour is found; 2 for a bad scene or an unknown\n"
                  "object id.\n";
     return 0;
@@ -149,7 +150,8 @@ int cmd_tour(const Argv& argv) {
   }
   const geometry::CSpace cspace(scene);
   const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  const auto reuse = planner_option(args, "samples,steering,paths");
+  const auto reuse =
+      planner_option(args, "samples,steering,paths,shortcuts,proofs", "samples,steering,paths");
   std::unique_ptr<planning::ReusePlanner> proposed;
   if (reuse) {
     proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, planning::TourOptions{},

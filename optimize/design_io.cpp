@@ -170,13 +170,15 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
                   {"legs_rejected", c.legs_rejected},
                   {"trees_reused", c.trees_reused},
                   {"failures_reused", c.failures_reused},
+                  {"legs_proven", c.legs_proven},
                   {"leg_requests", c.leg_requests},
                   {"rrt_iterations_histogram", histogram},
                   {"time_ms",
                    {{"database", c.database_ms},
                     {"repaired", c.repaired_ms},
                     {"planned", c.planned_ms},
-                    {"failed", c.failed_ms}}}};
+                    {"failed", c.failed_ms},
+                    {"proofs", c.proof_ms}}}};
   }
   return r.dump(1) + "\n";
 }

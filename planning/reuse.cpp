@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <stdexcept>
 
 #include "geometry/error.h"
 #include "planning/path_ops.h"
@@ -53,19 +54,22 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 ReuseOptions ReuseOptions::none() {
   ReuseOptions o;
-  o.samples = o.steering = o.paths = o.trees = o.failures = o.shortcuts = false;
+  o.samples = o.steering = o.paths = o.trees = o.failures = o.shortcuts = o.proofs = false;
   return o;
 }
 
 ReuseOptions ReuseOptions::parse(std::string_view list) {
-  if (list == "all") return ReuseOptions{};
   ReuseOptions o = none();
   if (list == "none") return o;
   std::size_t start = 0;
   while (start <= list.size()) {
     const std::size_t end = std::min(list.find(',', start), list.size());
     const std::string_view name = list.substr(start, end - start);
-    if (name == "samples") {
+    if (name == "all") {
+      const ReuseOptions d;  // every technique that is on by default
+      o.samples |= d.samples, o.steering |= d.steering, o.paths |= d.paths, o.trees |= d.trees;
+      o.failures |= d.failures, o.shortcuts |= d.shortcuts, o.proofs |= d.proofs;
+    } else if (name == "samples") {
       o.samples = true;
     } else if (name == "steering") {
       o.steering = true;
@@ -77,10 +81,13 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
       o.failures = true;
     } else if (name == "shortcuts") {
       o.shortcuts = true;
+    } else if (name == "proofs") {
+      o.proofs = true;
     } else {
       throw InputError(
           "--reuse: unknown technique '" + std::string(name) +
-          "' (all, none, or a comma list of samples, steering, paths, trees, failures, shortcuts)");
+          "' (all, none, or a comma list of all, samples, steering, paths, trees, failures, "
+          "shortcuts, proofs)");
     }
     start = end + 1;
   }
@@ -100,6 +107,7 @@ std::string ReuseOptions::names() const {
   add(trees, "trees");
   add(failures, "failures");
   add(shortcuts, "shortcuts");
+  add(proofs, "proofs");
   return out.empty() ? "none" : out;
 }
 
@@ -284,12 +292,14 @@ ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
   legs_rejected += o.legs_rejected;
   trees_reused += o.trees_reused;
   failures_reused += o.failures_reused;
+  legs_proven += o.legs_proven;
   leg_requests += o.leg_requests;
   for (const auto& [k, v] : o.rrt_iterations) rrt_iterations[k] += v;
   database_ms += o.database_ms;
   repaired_ms += o.repaired_ms;
   planned_ms += o.planned_ms;
   failed_ms += o.failed_ms;
+  proof_ms += o.proof_ms;
   return *this;
 }
 
@@ -304,6 +314,8 @@ struct ReusePlanner::Slot {
   int fresh_iterations = -1;  //!< RRT iterations of the fresh plan (−1: none)
   bool tree_reused = false;
   bool failure_reused = false;
+  bool proven = false;  //!< the fresh plan failed by a proof
+  double proof_ms = 0.0;
   std::optional<RrtTree> grown;               //!< the fresh plan's tree (tree reuse)
   std::vector<geometry::Vec2> failed_points;  //!< a failed fresh plan's nodes and goal
 };
@@ -315,6 +327,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       options_(options),
       radius_(scene.wheelchair.turning_radius),
       trees_(cspace, scene.wheelchair.turning_radius, options),
+      scene_(scene),
       objects_(scene.objects) {
   // A query piece starts at a node and is at most step_length long; the
   // chair (and the C-space's swept slice shape) stays within its half
@@ -348,6 +361,10 @@ TourHooks ReusePlanner::hooks() {
 
 void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
   iteration_seed_ = iteration_seed;
+  {
+    std::lock_guard lock(proof_mutex_);
+    grid_current_ = false;
+  }
   slots_.clear();
   leg_requests_ = 0;
   unshared_ = {};
@@ -490,18 +507,69 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     }
     out.stats.collision_checks += checks;
   }
-  LegResult r = planner.plan(from, to, seed, tree);
+  const int budget = planner.options().max_iterations;
+  const bool staged = options_.proofs && options_.proof_after < budget;
+  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : -1);
   add_stats(out.stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
-  if (!r.found && options_.failures) {
+  if (!r.found && staged) {
+    const auto t0 = std::chrono::steady_clock::now();
+    slot.proven = proven_impossible(from, to);
+    slot.proof_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    out.stats.time_ms += slot.proof_ms;
+    if (!slot.proven) {
+      // Not proven: the rest of the budget, growing the same tree.
+      r = planner.plan(from, to, splitmix(seed), tree, budget - options_.proof_after);
+      add_stats(out.stats, r.stats);
+      slot.fresh_iterations += r.stats.iterations;
+    }
+  }
+  // A proven failure is not recorded for `failures`: the proof looked at the
+  // whole layout, not only near the RRT's nodes, so failure_repeats() could
+  // not vouch for it after a move.
+  if (!r.found && options_.failures && !slot.proven) {
     slot.failed_points.reserve(tree.nodes.size() + 1);
     for (const RrtTree::Node& node : tree.nodes) slot.failed_points.push_back(node.pose.position());
     slot.failed_points.push_back(to.position());
   }
   if (options_.trees) slot.grown = std::move(tree);
   out.found = r.found;
-  if (r.found) out.path = options_.shortcuts ? shortened(from, r.path, out.stats) : std::move(r.path);
+  if (r.found)
+    out.path = options_.shortcuts ? shortened(from, r.path, out.stats) : std::move(r.path);
   return out;
+}
+
+bool ReusePlanner::proven_impossible(const Pose2& from, const Pose2& to) const {
+  std::unique_ptr<geometry::ReachabilityQuery> query;
+  {
+    std::lock_guard lock(proof_mutex_);
+    if (!grid_ && !grid_unavailable_) {
+      try {
+        grid_ = std::make_unique<geometry::FreeGrid>(scene_, options_.proof_grid);
+      } catch (const std::invalid_argument&) {
+        grid_unavailable_ = true;  // cells too coarse for this chair: no proofs
+      }
+    }
+    if (!grid_) return false;
+    if (!grid_current_) {
+      for (int i = 0; i < cspace_->object_count(); ++i)
+        grid_->move_object(i, cspace_->object_pose(i));
+      grid_current_ = true;
+    }
+    if (idle_queries_.empty()) {
+      query = std::make_unique<geometry::ReachabilityQuery>();
+    } else {
+      query = std::move(idle_queries_.back());
+      idle_queries_.pop_back();
+    }
+  }
+  // The grid is not written again before the next iteration: reads are safe.
+  const bool proven = query->query(*grid_, from, to, options_.proof_cells) ==
+                      geometry::ReachabilityQuery::Answer::kDisconnected;
+  std::lock_guard lock(proof_mutex_);
+  idle_queries_.push_back(std::move(query));
+  return proven;
 }
 
 rs::Path ReusePlanner::shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const {
@@ -583,6 +651,8 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     slot->fresh_iterations = local.fresh_iterations;
     slot->tree_reused = local.tree_reused;
     slot->failure_reused = local.failure_reused;
+    slot->proven = local.proven;
+    slot->proof_ms = local.proof_ms;
     slot->failed_points = std::move(local.failed_points);
     slot->grown = std::move(local.grown);
   }
@@ -617,6 +687,8 @@ ReuseCounters ReusePlanner::end_iteration() {
     }
     if (slot->tree_reused) ++c.trees_reused;
     if (slot->failure_reused) ++c.failures_reused;
+    if (slot->proven && slot->planned_done && !slot->planned.found) ++c.legs_proven;
+    c.proof_ms += slot->proof_ms;
     if (options_.failures && slot->planned_done) {
       if (!slot->failed_points.empty()) {
         Failure f{slot->from, slot->to, {}, std::move(slot->failed_points)};

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "geometry/cspace.h"
+#include "geometry/free_grid.h"
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 #include "planning/motion_validator.h"
@@ -53,6 +54,19 @@ struct ReuseOptions {
   //! shortened first (shorten_path), so that reused paths are not the
   //! RRT's detours: without it, reuse trades tour length for time.
   bool shortcuts = true;
+  //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
+  //! found the leg after `proof_after` RRT iterations asks geometry::FreeGrid
+  //! whether the leg's ends are in different components of a certified outer
+  //! approximation of the free C-space; if so no motion exists and the leg
+  //! fails at once, else the RRT goes on with the rest of its budget.
+  //! Measured not to pay (docs/planner.md): the legs the RRT cannot find are
+  //! nearly always connected in that approximation.
+  bool proofs = false;
+  int proof_after = 300;                 //!< RRT iterations before a proof is tried
+  geometry::FreeGridOptions proof_grid;  //!< cells of the proof's grid
+  //! Cells a proof may search: a proof succeeds when one end's component is
+  //! small (a pocket), so large searches only cost time.
+  std::size_t proof_cells = 20'000;
   //! §V-B: a stored path whose ends moved apart is repaired (valid part kept,
   //! gap re-planned) before a fresh plan is tried.
   bool repair = true;
@@ -65,11 +79,14 @@ struct ReuseOptions {
   int decomposition_stop = 100;      //!< consecutive agreeing samples ending it (paper: 100)
 
   //! True when at least one technique is on; all off is the baseline exactly.
-  bool any() const { return samples || steering || paths || trees || failures || shortcuts; }
+  bool any() const {
+    return samples || steering || paths || trees || failures || shortcuts || proofs;
+  }
   //! Every technique off.
   static ReuseOptions none();
-  //! Parses "all", "none" or a comma list of samples, steering, paths, trees,
-  //! failures, shortcuts (the ones listed are on); hrs::InputError otherwise.
+  //! Parses "none" or a comma list of samples, steering, paths, trees,
+  //! failures, shortcuts, proofs and "all" (every technique on by default,
+  //! i.e. all but proofs); the ones listed are on. hrs::InputError otherwise.
   static ReuseOptions parse(std::string_view list);
   //! The comma list of the techniques on ("none" when none).
   std::string names() const;
@@ -191,12 +208,14 @@ struct ReuseCounters {
   std::uint64_t legs_rejected = 0;    //!< stored paths not valid as they were
   std::uint64_t trees_reused = 0;     //!< fresh plans that grew a kept tree
   std::uint64_t failures_reused = 0;  //!< failed legs known to fail again (in legs_failed)
+  std::uint64_t legs_proven = 0;      //!< failed legs proven impossible (in legs_failed)
   std::uint64_t leg_requests = 0;     //!< leg look-ups by tours (shared legs counted per tour)
   //! RRT iterations of the successful fresh plans: iterations → count (Fig. "rrt-it").
   std::map<int, std::uint64_t> rrt_iterations;
   //! Work behind the outcomes (wall time, not reproducible): database
   //! validations, repairs, fresh plans found, fresh plans failed.
   double database_ms = 0.0, repaired_ms = 0.0, planned_ms = 0.0, failed_ms = 0.0;
+  double proof_ms = 0.0;  //!< of which proofs (grid updates and searches)
   ReuseCounters& operator+=(const ReuseCounters& other);
 };
 
@@ -246,6 +265,9 @@ class ReusePlanner final : public LegProvider {
                       LegPlanner& planner, Slot& slot) const;
   //! shorten_path() of a found path, its checks counted into `stats`.
   rs::Path shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const;
+  //! True when FreeGrid proves that no motion joins `from` and `to` in the
+  //! current layout (the grid is brought up to date once per iteration).
+  bool proven_impossible(const Pose2& from, const Pose2& to) const;
   std::optional<LegOutcome> repair(const LegKey& key, const Pose2& from, const Pose2& to,
                                    std::uint64_t seed, LegPlanner& planner) const;
 
@@ -259,6 +281,14 @@ class ReusePlanner final : public LegProvider {
   PathDatabase database_;
   TreeStore trees_;
   std::map<LegKey, Failure> failures_;
+  geometry::Scene scene_;  //!< for building the proof grid
+  //! The proof grid and its per-thread searches; built on the first proof,
+  //! moved to the current layout at the first proof of each iteration.
+  mutable std::mutex proof_mutex_;
+  mutable std::unique_ptr<geometry::FreeGrid> grid_;
+  mutable bool grid_current_ = false;
+  mutable bool grid_unavailable_ = false;
+  mutable std::vector<std::unique_ptr<geometry::ReachabilityQuery>> idle_queries_;
   std::vector<geometry::Object> objects_;  //!< footprints, for failure_repeats()
   double reach_ = 0.0;                     //!< how far from a node a collision query can look
   std::uint64_t iteration_seed_ = 0;

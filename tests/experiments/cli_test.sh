@@ -88,6 +88,12 @@ expect_err "unknown planner" "--planner: unknown planner 'fast'"
 check "tour proposed" 0 "$bin" tour "$bed" --sequence door,tv --planner proposed
 grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour proposed printed no tour"; fails=$((fails + 1)); }
 check "tour reuse trees" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse trees
+check "plan reuse shortcuts" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse shortcuts
+expect_err "plan rejects shortcuts" "shortcuts would do nothing here"
+check "tour proposed proofs" 0 "$bin" tour "$bed" --sequence door,tv,bed --planner proposed --reuse samples,steering,paths,shortcuts,proofs
+grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour with proofs printed no tour"; fails=$((fails + 1)); }
+check "reuse unknown technique" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse proof
+expect_err "unknown technique" "--reuse: unknown technique 'proof'"
 
 if [ "$fails" -ne 0 ]; then echo "$fails failure(s)"; exit 1; fi
 echo "all CLI checks passed"

@@ -1,0 +1,162 @@
+// Infeasibility proofs (ReuseOptions::proofs, geometry::FreeGrid) against the
+// planner: a leg the RRT found is never proven impossible, and every pose of
+// its path lies in an unblocked cell, each cell a 26-neighbour of the last
+// (the path is the witness the proof must not contradict); a leg through a
+// gap narrower than the chair is proven impossible and the baseline RRT with
+// ten times its budget finds nothing either; with proofs on, solvable legs
+// are still found.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+
+#include "geometry/cspace.h"
+#include "geometry/free_grid.h"
+#include "planning/reuse.h"
+#include "planning/rrt.h"
+#include "tests/planning/support.h"
+
+namespace hrs::planning {
+namespace {
+
+using geometry::FreeGrid;
+using geometry::ReachabilityQuery;
+
+//! True if cells a and b are equal or 26-neighbours (heading wraps).
+bool adjacent(const FreeGrid& g, std::size_t a, std::size_t b) {
+  auto split = [&](std::size_t c, int& x, int& y, int& k) {
+    k = static_cast<int>(c % g.slices());
+    x = static_cast<int>((c / g.slices()) % g.nx());
+    y = static_cast<int>((c / g.slices()) / g.nx());
+  };
+  int ax, ay, ak, bx, by, bk;
+  split(a, ax, ay, ak);
+  split(b, bx, by, bk);
+  const int dk = std::abs(ak - bk);
+  return std::abs(ax - bx) <= 1 && std::abs(ay - by) <= 1 && (dk <= 1 || dk == g.slices() - 1);
+}
+
+TEST(Proofs, FoundPathsCrossOnlyUnblockedNeighbouringCellsAndAreNeverProvenImpossible) {
+  int paths = 0;
+  for (const std::string& file : testing::planning_scene_files()) {
+    const geometry::Scene scene = geometry::load_scene(file);
+    const geometry::CSpace cspace(scene);
+    const FreeGrid grid(scene);
+    LegPlanner planner(scene, cspace);
+    ReachabilityQuery query;
+    std::mt19937_64 rng(99);
+    for (int i = 0; i < 60; ++i) {
+      const Pose2 a = testing::random_free_pose(scene, cspace, rng);
+      const Pose2 b = testing::random_free_pose(scene, cspace, rng);
+      const LegResult r = planner.plan(a, b, 1 + i);
+      if (!r.found) continue;
+      ++paths;
+      ASSERT_NE(query.query(grid, a, b), ReachabilityQuery::Answer::kDisconnected)
+          << file << " leg " << i << ": found, yet proven impossible";
+      // Walk the path every 2 mm (a cell is >= 2.4 cm and 2.5°; the chair
+      // turns by at most 2 mm / 0.7 m = 0.16° a step).
+      std::size_t last = grid.cell_of(a);
+      for (const Pose2& p : rs::sample(a, r.path, 0.002)) {
+        const std::size_t cell = grid.cell_of(p);
+        ASSERT_FALSE(grid.blocked(cell)) << file << " leg " << i << ": path pose in a blocked cell";
+        ASSERT_TRUE(adjacent(grid, last, cell)) << file << " leg " << i << ": cells jump";
+        last = cell;
+      }
+    }
+  }
+  EXPECT_GT(paths, 150);
+}
+
+//! The 6 × 3 m room of free_grid_test with a 0.2 m partition at x = 3 whose
+//! gap at the top is `gap` metres.
+geometry::Scene split_room(double gap) {
+  geometry::Scene s;
+  s.name = "split";
+  s.room.polygon = {{0, 0}, {6, 0}, {6, 3}, {0, 3}};
+  s.door = {{1.0, 0}, 0.9, 1.2, std::nullopt};
+  s.wheelchair = {1.1, 0.65, 0.7};
+  geometry::Object wall;
+  wall.id = "partition";
+  const double len = 3.0 - gap;
+  wall.footprint = {{-0.1, -0.5 * len}, {0.1, -0.5 * len}, {0.1, 0.5 * len}, {-0.1, 0.5 * len}};
+  wall.pose = {3.0, 0.5 * len, 0.0};
+  wall.fixed = true;
+  geometry::Object table;
+  table.id = "table";
+  table.footprint = {{-0.3, -0.3}, {0.3, -0.3}, {0.3, 0.3}, {-0.3, 0.3}};
+  table.pose = {5.0, 1.0, 0.0};
+  s.objects = {wall, table};
+  return s;
+}
+
+TEST(Proofs, LegThroughTooNarrowAGapIsProvenAndNoLongRrtFindsIt) {
+  const Pose2 left{1.0, 1.2, 0.0}, right{4.6, 2.0, 0.0};
+  for (double gap : {0.5, 1.6}) {
+    const geometry::Scene scene = split_room(gap);
+    const geometry::CSpace cspace(scene);
+    ASSERT_TRUE(cspace.is_free(left) && cspace.is_free(right));
+    ReuseOptions options = ReuseOptions::none();
+    options.proofs = true;
+    options.proof_cells = 10'000'000;  // both halves are large components
+    ReusePlanner reuse(scene, cspace, {}, options, 3);
+    LegPlanner planner(scene, cspace, {}, reuse.hooks().planner);
+    reuse.begin_iteration(5);
+    const LegOutcome o = reuse.resolve({-1, 1, 0, 0}, left, right, 0, true, planner);
+    const ReuseCounters c = reuse.end_iteration();
+    PlannerOptions long_run;
+    long_run.max_iterations = 30'000;
+    long_run.max_nodes = 200'000;
+    LegPlanner baseline(scene, cspace, long_run);
+    const LegResult r = baseline.plan(left, right, 11);
+    if (gap < 0.65) {
+      EXPECT_FALSE(o.found);
+      EXPECT_EQ(c.legs_proven, 1u);
+      EXPECT_LE(o.stats.iterations, options.proof_after);
+      EXPECT_FALSE(r.found) << "a path through a " << gap << " m gap";
+    } else {
+      EXPECT_TRUE(o.found) << "wide gap";
+      EXPECT_EQ(c.legs_proven, 0u);
+      EXPECT_TRUE(r.found);
+    }
+  }
+}
+
+TEST(Proofs, RandomLegsProvenImpossibleAreNotFoundByTenTimesTheBudget) {
+  // Random free pose pairs in rooms split by too narrow a gap: a pair is
+  // proven impossible exactly when its poses are in different halves, and
+  // every such pair is given to the baseline RRT with 30 000 iterations.
+  int proven = 0, pairs = 0;
+  for (double gap : {0.45, 0.55}) {
+    const geometry::Scene scene = split_room(gap);
+    const geometry::CSpace cspace(scene);
+    const FreeGrid grid(scene);
+    ReachabilityQuery query;
+    PlannerOptions long_run;
+    long_run.max_iterations = 30'000;
+    long_run.max_nodes = 200'000;
+    LegPlanner planner(scene, cspace, long_run);
+    std::mt19937_64 rng(5);
+    for (int i = 0; i < 24; ++i) {
+      const Pose2 a = testing::random_free_pose(scene, cspace, rng);
+      const Pose2 b = testing::random_free_pose(scene, cspace, rng);
+      ++pairs;
+      const bool across = (a.x < 3.0) != (b.x < 3.0);
+      const auto answer = query.query(grid, a, b, 10'000'000);
+      // Analytic: the halves are separated, each half is connected.
+      EXPECT_EQ(answer, across ? ReachabilityQuery::Answer::kDisconnected
+                               : ReachabilityQuery::Answer::kConnected)
+          << "gap " << gap << " pair " << i;
+      if (answer != ReachabilityQuery::Answer::kDisconnected) continue;
+      ++proven;
+      EXPECT_FALSE(planner.plan(a, b, 1 + i).found) << "pair " << i << ": proven, yet found";
+    }
+  }
+  std::printf("pairs proven impossible: %d of %d\n", proven, pairs);
+  EXPECT_GT(proven, 8);
+}
+
+}  // namespace
+}  // namespace hrs::planning
