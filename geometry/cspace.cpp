@@ -37,27 +37,9 @@ Vec2 unit(Vec2 v) {
   return {v.x / l, v.y / l};
 }
 
-//! Convex hull (Andrew's monotone chain), counter-clockwise. Rounding here only
-//! affects tightness: supports are always taken over all the points.
-std::vector<Vec2> hull(std::vector<Vec2> pts) {
-  std::sort(pts.begin(), pts.end(),
-            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<Vec2> h(2 * pts.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && cross(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
-    h[k++] = pts[i];
-  }
-  for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
-    h[k++] = pts[i];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
 //! Convex hull of 12 points into a fixed array (no allocation); returns the
-//! vertex count. Same algorithm and caveat as hull().
+//! vertex count. Same algorithm and caveat as convex_hull_doubles(); rounding
+//! only affects tightness: supports are always taken over all the points.
 int hull_fixed(const Vec2 (&in)[12], Vec2 (&out)[12]) {
   Vec2 pts[12];
   std::copy(in, in + 12, pts);
@@ -180,7 +162,7 @@ void CSpace::build_slice_shapes(const Wheelchair& chair) {
     const double b = -kPi + (k + 1) * step + kSliceOverlap;
     Vec2 pts[12];
     swept_cover(corners_, a, b, pts);
-    slice_data_[k].swept = hull(std::vector<Vec2>(pts, pts + 12));
+    slice_data_[k].swept = convex_hull_doubles(std::vector<Vec2>(pts, pts + 12));
     slice_data_[k].swept_normals = edge_normals(slice_data_[k].swept);
   }
 }

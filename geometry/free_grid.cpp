@@ -25,27 +25,6 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kSlack = 1e-3;  // ε: metres of overlap the rasterized cores keep
 constexpr std::size_t kMaxCells = std::size_t{64} << 20;
 
-//! Convex hull (monotone chain), counter-clockwise. Its vertices are input
-//! points, so rounding in the orientation tests can only drop points that lie
-//! within rounding of the hull: the result stays inside the true hull.
-std::vector<Vec2> convex_hull(std::vector<Vec2> pts) {
-  std::sort(pts.begin(), pts.end(),
-            [](Vec2 a, Vec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  if (pts.size() < 3) return pts;
-  std::vector<Vec2> h(2 * pts.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    while (k >= 2 && cross(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
-    h[k++] = pts[i];
-  }
-  for (std::size_t i = pts.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(h[k - 1] - h[k - 2], pts[i] - h[k - 2]) <= 0) --k;
-    h[k++] = pts[i];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
 }  // namespace
 
 FreeGrid::FreeGrid(const Scene& scene, FreeGridOptions options) : slices_(options.slices) {
@@ -112,7 +91,7 @@ void FreeGrid::rasterize(const Polygon& piece, int k, int delta) {
   pts.reserve(piece.size() * 4);
   for (const Vec2& a : piece)
     for (const Vec2& c : cores_[k]) pts.push_back(a - c);
-  const std::vector<Vec2> p = convex_hull(std::move(pts));
+  const std::vector<Vec2> p = convex_hull_doubles(std::move(pts));
   if (p.size() < 3) return;
   double pymin = p[0].y, pymax = p[0].y;
   for (const Vec2& v : p) pymin = std::min(pymin, v.y), pymax = std::max(pymax, v.y);

@@ -22,6 +22,12 @@ double boundary_distance(Vec2 p, const Polygon& polygon);
 //! Convex pieces whose union is the simple counter-clockwise polygon
 //! (Hertel–Mehlhorn on an exact triangulation); a convex input is returned as is.
 std::vector<Polygon> convex_partition(const Polygon& polygon);
+//! Convex hull in doubles (monotone chain), counter-clockwise, of at least 3
+//! points. Its vertices are input points and rounding in the orientation
+//! tests can only drop points within rounding of the hull, so it never
+//! exceeds the true hull; callers needing a cover take supports over all the
+//! points instead.
+std::vector<Vec2> convex_hull_doubles(std::vector<Vec2> points);
 //! Convex pieces covering (room bounding box grown by `margin`) minus the room.
 std::vector<Polygon> complement_pieces(const Polygon& room, double margin);
 
