@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "experiments/commands.h"
 #include "geometry/cspace.h"
 #include "geometry/error.h"
+#include "geometry/free_grid.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/scene.h"
 #include "planning/reuse.h"
@@ -85,7 +87,9 @@ int cmd_plan(const Argv& argv) {
                  "baseline RRT with Reeds-Shepp steering (paper III-B: goal bias 0.8, k = 10,\n"
                  "n = 5 steps) and prints one JSON object: found, from, to, radius, length,\n"
                  "segments, waypoints (every 5 cm), iterations, tree_nodes, collision_checks,\n"
-                 "time_ms. --seed (default 1) makes the run reproducible; --iterations caps\n"
+                 "time_ms, impossible (true: no collision-free motion joins the poses at all,\n"
+                 "certified by a grid over the free poses; false: found, or not proven).\n"
+                 "--seed (default 1) makes the run reproducible; --iterations caps\n"
                  "the RRT (default 3000); --step is the tree's step length (default 0.25 m).\n"
                  "--planner proposed draws the RRT's samples from the RS-decomposition and\n"
                  "steers through its predicted words (paper V-A; --reuse samples or steering\n"
@@ -115,7 +119,20 @@ int cmd_plan(const Argv& argv) {
   planning::LegPlanner planner(scene, cspace, options,
                                proposed ? proposed->hooks().planner : planning::PlannerHooks{});
   const planning::LegResult result = planner.plan(from, to, seed);
-  std::cout << planning::plan_json(from, to, result, scene.wheelchair.turning_radius) << "\n";
+  // Not found: is there any motion at all? (A certificate, or "not proven".)
+  bool impossible = false;
+  if (!result.found) {
+    try {
+      const geometry::FreeGrid grid(scene);
+      geometry::ReachabilityQuery query;
+      impossible = query.query(grid, from, to, grid.cell_count()) ==
+                   geometry::ReachabilityQuery::Answer::kDisconnected;
+    } catch (const std::invalid_argument&) {
+      // The chair is too small for the grid's cells: nothing is proven.
+    }
+  }
+  std::cout << planning::plan_json(from, to, result, scene.wheelchair.turning_radius, impossible)
+            << "\n";
   return 0;
 }
 

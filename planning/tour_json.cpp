@@ -70,7 +70,8 @@ json tour_object(const Tour& tour, std::optional<double> likelihood) {
 
 }  // namespace
 
-std::string plan_json(const Pose2& from, const Pose2& to, const LegResult& result, double radius) {
+std::string plan_json(const Pose2& from, const Pose2& to, const LegResult& result, double radius,
+                      std::optional<bool> impossible) {
   json j;
   j["found"] = result.found;
   j["from"] = pose_json(from);
@@ -84,6 +85,7 @@ std::string plan_json(const Pose2& from, const Pose2& to, const LegResult& resul
   j["tree_nodes"] = result.stats.tree_nodes;
   j["collision_checks"] = result.stats.collision_checks;
   j["time_ms"] = result.stats.time_ms;
+  if (impossible) j["impossible"] = *impossible;
   return j.dump();
 }
 

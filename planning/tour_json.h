@@ -15,8 +15,10 @@ namespace hrs::planning {
 
 //! The `hrspace plan` object: found, from, to, radius, length, segments,
 //! waypoints (every kWaypointStep), iterations, time_ms, plus tree_nodes and
-//! collision_checks. One line, no trailing newline.
-std::string plan_json(const Pose2& from, const Pose2& to, const LegResult& result, double radius);
+//! collision_checks, and `impossible` when given (true: no motion exists).
+//! One line, no trailing newline.
+std::string plan_json(const Pose2& from, const Pose2& to, const LegResult& result, double radius,
+                      std::optional<bool> impossible = std::nullopt);
 
 //! One entry of tours.json: sequence, likelihood (when given), found, legs
 //! (from, to, segments, waypoints, ...), metrics {length, rotation,

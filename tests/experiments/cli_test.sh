@@ -85,6 +85,22 @@ check "plan reuse across layouts" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0
 expect_err "plan rejects paths" "--reuse: 'paths'"
 check "plan unknown planner" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner fast
 expect_err "unknown planner" "--planner: unknown planner 'fast'"
+# A room split by a partition whose gap (0.5 m) is narrower than the chair
+# (0.65 m): a leg across it is certified impossible; one within a half is not.
+cat >"$tmp/split.json" <<'JSON'
+{"format": "hrspace-scene/1", "name": "split",
+ "room": {"size": [6, 3]},
+ "door": {"center": [1.0, 0.0], "width": 0.9},
+ "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+ "objects": [{"id": "partition", "size": [0.2, 2.5], "pose": [3.0, 1.25, 0], "fixed": true}],
+ "activity": {"transitions": {"door": {"partition": 1.0}}}}
+JSON
+check "plan across a closed partition" 0 "$bin" plan "$tmp/split.json" --from 1.0,1.5,0 --to 4.6,2.0,0
+grep -q '"found":false' "$tmp/out" && grep -q '"impossible":true' "$tmp/out" ||
+  { echo "FAIL: leg across the partition not proven impossible"; sed 's/^/  /' "$tmp/out"; fails=$((fails + 1)); }
+check "plan within one half" 0 "$bin" plan "$tmp/split.json" --from 1.0,1.5,0 --to 2.0,2.0,1.0
+grep -q '"impossible":false' "$tmp/out" ||
+  { echo "FAIL: leg within one half called impossible"; fails=$((fails + 1)); }
 check "tour proposed" 0 "$bin" tour "$bed" --sequence door,tv --planner proposed
 grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour proposed printed no tour"; fails=$((fails + 1)); }
 check "tour reuse trees" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse trees
