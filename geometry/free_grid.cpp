@@ -129,9 +129,8 @@ std::size_t FreeGrid::cell_of(const Pose2& pose) const {
 }
 
 Pose2 FreeGrid::centre(std::size_t cell) const {
-  const int k = static_cast<int>(cell % slices_);
-  const std::size_t xy = cell / slices_;
-  const int ix = static_cast<int>(xy % nx_), iy = static_cast<int>(xy / nx_);
+  int ix, iy, k;
+  coords(cell, ix, iy, k);
   return {xmin_ + (ix + 0.5) * hx_, ymin_ + (iy + 0.5) * hy_, -kPi + (k + 0.5) * dtheta_};
 }
 
@@ -162,10 +161,8 @@ ReachabilityQuery::Answer ReachabilityQuery::query(const FreeGrid& grid, const P
     for (int s = 0; s < 2; ++s) {
       if (head[s] == queue_[s].size()) return Answer::kDisconnected;
       if (visited_.size() >= max_cells) return Answer::kUnknown;
-      const std::size_t cell = queue_[s][head[s]++];
-      const int k = static_cast<int>(cell % nk);
-      const std::size_t xy = cell / nk;
-      const int ix = static_cast<int>(xy % nx), iy = static_cast<int>(xy / nx);
+      int ix, iy, k;
+      grid.coords(queue_[s][head[s]++], ix, iy, k);
       for (int dy = -1; dy <= 1; ++dy) {
         const int y = iy + dy;
         if (y < 0 || y >= ny) continue;

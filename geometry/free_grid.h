@@ -69,6 +69,12 @@ class FreeGrid {
   std::size_t index(int ix, int iy, int k) const {
     return (static_cast<std::size_t>(iy) * nx_ + ix) * slices_ + k;
   }
+  //! The inverse of index().
+  void coords(std::size_t cell, int& ix, int& iy, int& k) const {
+    k = static_cast<int>(cell % slices_);
+    const std::size_t xy = cell / slices_;
+    ix = static_cast<int>(xy % nx_), iy = static_cast<int>(xy / nx_);
+  }
   //! The cell holding `pose` (clamped to the grid: poses whose centre is
   //! outside the room's box are never free anyway).
   std::size_t cell_of(const Pose2& pose) const;

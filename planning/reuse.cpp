@@ -327,8 +327,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       options_(options),
       radius_(scene.wheelchair.turning_radius),
       trees_(cspace, scene.wheelchair.turning_radius, options),
-      scene_(scene),
-      objects_(scene.objects) {
+      scene_(scene) {
   // A query piece starts at a node and is at most step_length long; the
   // chair (and the C-space's swept slice shape) stays within its half
   // diagonal of its centre. 5 cm on top for the conservative rounding.
@@ -464,7 +463,7 @@ bool ReusePlanner::failure_repeats(const LegKey& key, const Pose2& from, const P
     const Pose2& now = cspace_->object_pose(i);
     if (now == f.layout[i]) continue;
     for (const Pose2& pose : {f.layout[i], now}) {
-      geometry::Object o = objects_[i];
+      geometry::Object o = scene_.objects[i];
       o.pose = pose;
       double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
       for (const geometry::Vec2& v : geometry::world_footprint(o)) {

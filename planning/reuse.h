@@ -281,7 +281,7 @@ class ReusePlanner final : public LegProvider {
   PathDatabase database_;
   TreeStore trees_;
   std::map<LegKey, Failure> failures_;
-  geometry::Scene scene_;  //!< for building the proof grid
+  geometry::Scene scene_;  //!< footprints for failure_repeats(), the proof grid
   //! The proof grid and its per-thread searches; built on the first proof,
   //! moved to the current layout at the first proof of each iteration.
   mutable std::mutex proof_mutex_;
@@ -289,8 +289,7 @@ class ReusePlanner final : public LegProvider {
   mutable bool grid_current_ = false;
   mutable bool grid_unavailable_ = false;
   mutable std::vector<std::unique_ptr<geometry::ReachabilityQuery>> idle_queries_;
-  std::vector<geometry::Object> objects_;  //!< footprints, for failure_repeats()
-  double reach_ = 0.0;                     //!< how far from a node a collision query can look
+  double reach_ = 0.0;  //!< how far from a node a collision query can look
   std::uint64_t iteration_seed_ = 0;
   std::mutex mutex_;  //!< guards slots_ and leg_requests_
   std::map<LegKey, std::unique_ptr<Slot>> slots_;

@@ -49,6 +49,25 @@ inline geometry::Scene empty_room(double width, double depth) {
   return s;
 }
 
+//! A uniform double in [0, 1) from 53 random bits.
+inline double unit01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+
+//! A 6 × 3 m room split at x = 3 by a fixed 0.2 m partition that leaves a
+//! gap of `gap` metres at the top (the chair is 0.65 m wide).
+inline geometry::Scene split_room(double gap) {
+  geometry::Scene s = empty_room(6.0, 3.0);
+  s.name = "split";
+  s.door.center = {1.0, 0.0};
+  geometry::Object wall;
+  wall.id = "partition";
+  const double len = 3.0 - gap;
+  wall.footprint = {{-0.1, -0.5 * len}, {0.1, -0.5 * len}, {0.1, 0.5 * len}, {-0.1, 0.5 * len}};
+  wall.pose = {3.0, 0.5 * len, 0.0};
+  wall.fixed = true;
+  s.objects = {wall};
+  return s;
+}
+
 //! Paths of the scene files shipped in scenes/ (sorted).
 inline std::vector<std::string> scene_files() {
   std::vector<std::string> out;

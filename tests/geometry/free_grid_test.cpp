@@ -20,8 +20,8 @@ namespace hrs::geometry {
 namespace {
 
 using hrs::testing::ExactReference;
-
-double unit01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+using hrs::testing::split_room;
+using hrs::testing::unit01;
 
 //! The scenes under test: the L-shaped room and every shipped scene, each
 //! also with its movable objects displaced at random (overlaps allowed).
@@ -52,9 +52,8 @@ Pose2 pose_in_cell(const FreeGrid& g, std::size_t cell, std::mt19937_64& rng) {
 //! True if a 26-neighbour of the cell is not blocked (the cell is on the
 //! border of the blocked region, where the test is tightest).
 bool on_border(const FreeGrid& g, std::size_t cell) {
-  const int k = static_cast<int>(cell % g.slices());
-  const std::size_t xy = cell / g.slices();
-  const int ix = static_cast<int>(xy % g.nx()), iy = static_cast<int>(xy / g.nx());
+  int ix, iy, k;
+  g.coords(cell, ix, iy, k);
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx)
       for (int dk = -1; dk <= 1; ++dk) {
@@ -153,20 +152,6 @@ TEST(FreeGrid, IncrementalMovesEqualRebuild) {
     for (std::size_t c = 0; c < grid.cell_count(); ++c)
       ASSERT_EQ(grid.blocked(c), fresh.blocked(c)) << "cell " << c << " after step " << step;
   }
-}
-
-//! A 6 × 3 m room split at x = 3 by a 0.2 m partition with a gap of `gap`
-//! metres at its top.
-Scene split_room(double gap) {
-  Scene s = hrs::testing::empty_room(6.0, 3.0);
-  Object wall;
-  wall.id = "partition";
-  const double len = 3.0 - gap;
-  wall.footprint = {{-0.1, -0.5 * len}, {0.1, -0.5 * len}, {0.1, 0.5 * len}, {-0.1, 0.5 * len}};
-  wall.pose = {3.0, 0.5 * len, 0.0};
-  wall.fixed = true;
-  s.objects = {wall};
-  return s;
 }
 
 TEST(ReachabilityQuery, GapNarrowerThanTheChairSeparatesTheRoom) {

@@ -27,14 +27,9 @@ using geometry::ReachabilityQuery;
 
 //! True if cells a and b are equal or 26-neighbours (heading wraps).
 bool adjacent(const FreeGrid& g, std::size_t a, std::size_t b) {
-  auto split = [&](std::size_t c, int& x, int& y, int& k) {
-    k = static_cast<int>(c % g.slices());
-    x = static_cast<int>((c / g.slices()) % g.nx());
-    y = static_cast<int>((c / g.slices()) / g.nx());
-  };
   int ax, ay, ak, bx, by, bk;
-  split(a, ax, ay, ak);
-  split(b, bx, by, bk);
+  g.coords(a, ax, ay, ak);
+  g.coords(b, bx, by, bk);
   const int dk = std::abs(ak - bk);
   return std::abs(ax - bx) <= 1 && std::abs(ay - by) <= 1 && (dk <= 1 || dk == g.slices() - 1);
 }
@@ -70,25 +65,14 @@ TEST(Proofs, FoundPathsCrossOnlyUnblockedNeighbouringCellsAndAreNeverProvenImpos
   EXPECT_GT(paths, 150);
 }
 
-//! The 6 × 3 m room of free_grid_test with a 0.2 m partition at x = 3 whose
-//! gap at the top is `gap` metres.
+//! testing::split_room with a table in the right half (a leg's goal object).
 geometry::Scene split_room(double gap) {
-  geometry::Scene s;
-  s.name = "split";
-  s.room.polygon = {{0, 0}, {6, 0}, {6, 3}, {0, 3}};
-  s.door = {{1.0, 0}, 0.9, 1.2, std::nullopt};
-  s.wheelchair = {1.1, 0.65, 0.7};
-  geometry::Object wall;
-  wall.id = "partition";
-  const double len = 3.0 - gap;
-  wall.footprint = {{-0.1, -0.5 * len}, {0.1, -0.5 * len}, {0.1, 0.5 * len}, {-0.1, 0.5 * len}};
-  wall.pose = {3.0, 0.5 * len, 0.0};
-  wall.fixed = true;
+  geometry::Scene s = testing::split_room(gap);
   geometry::Object table;
   table.id = "table";
   table.footprint = {{-0.3, -0.3}, {0.3, -0.3}, {0.3, 0.3}, {-0.3, 0.3}};
   table.pose = {5.0, 1.0, 0.0};
-  s.objects = {wall, table};
+  s.objects.push_back(table);
   return s;
 }
 

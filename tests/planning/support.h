@@ -25,8 +25,6 @@ namespace hrs::testing {
 //! Paths of the scene files shipped in scenes/ (sorted).
 inline std::vector<std::string> planning_scene_files() { return scene_files(); }
 
-inline double unit01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
 //! A uniformly random pose in the room's box that the C-space certifies free.
 inline geometry::Pose2 random_free_pose(const geometry::Scene& scene,
                                         const geometry::CSpace& cspace, std::mt19937_64& rng) {
