@@ -91,10 +91,11 @@ int main(int argc, char** argv) {
   const char* rooms_env = std::getenv("HRSPACE_REPLAY_ROOMS");
   const std::vector<std::string> rooms =
       bench::split_list(rooms_env ? rooms_env : "bedroom,office,living_room");
-  // "all" (the defaults), with the opt-in proofs, then each technique alone.
-  const std::vector<std::string> configs{"baseline",  "all",     "all,proofs", "paths",
-                                         "trees",     "samples", "steering",   "failures",
-                                         "shortcuts", "proofs"};
+  // "all" (the defaults), all but the budget, with the opt-in proofs, then
+  // each technique alone.
+  const std::vector<std::string> configs{"baseline", "all",       "all,-budget", "all,proofs",
+                                         "paths",    "trees",     "samples",     "steering",
+                                         "failures", "shortcuts", "budget",      "proofs"};
   static std::map<std::string, Recording> recordings;
   for (const std::string& room : rooms) {
     Recording& rec = recordings[room];

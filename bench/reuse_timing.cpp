@@ -8,8 +8,8 @@
 //       --rooms bedroom,office,living_room
 //       --configs baseline,all,paths,trees,samples,steering,failures --out timing.csv
 //
-// Configs: baseline, all, all-steering (all but the decomposition look-ups),
-// or any --reuse list of `hrspace design`.
+// Configs: baseline or any --reuse list of `hrspace design`; a list with
+// commas needs semicolons between configs: --configs 'baseline;all;all,-budget'.
 
 #include <cmath>
 #include <cstdio>
@@ -81,13 +81,11 @@ int main(int argc, char** argv) {
         o.iterations = iterations;
         o.threads = threads;
         o.proposed = config != "baseline";
-        if (o.proposed)
-          o.reuse = planning::ReuseOptions::parse(
-              config == "all-steering" ? "samples,paths,trees,failures" : config);
+        if (o.proposed) o.reuse = planning::ReuseOptions::parse(config);
         const optimize::DesignResult r = optimize::design(scene, o);
         const auto& c = r.counters;
-        csv << room << ',' << config << ',' << seed << ',' << iterations << ',' << r.threads << ','
-            << r.time_total_s << ',' << r.time_planning_s << ',' << r.initial.total() << ','
+        csv << room << ",\"" << config << "\"," << seed << ',' << iterations << ',' << r.threads
+            << ',' << r.time_total_s << ',' << r.time_planning_s << ',' << r.initial.total() << ','
             << r.final.total() << ',' << r.final.tours_found << ',' << c.legs_database << ','
             << c.legs_repaired << ',' << c.legs_planned << ',' << c.legs_failed << ','
             << c.failures_reused << ',' << c.legs_proven << '\n'

@@ -174,6 +174,7 @@ std::optional<planning::ReuseOptions> planner_option(const Args& args, const std
   extra.trees = o.trees && !ok.trees;
   extra.failures = o.failures && !ok.failures;
   extra.shortcuts = o.shortcuts && !ok.shortcuts;
+  extra.budget = o.budget && !ok.budget;
   extra.proofs = o.proofs && !ok.proofs;
   if (extra.any())
     throw InputError("--reuse: '" + list + "': " + extra.names() +

@@ -151,7 +151,7 @@ int cmd_tour(const Argv& argv) {
                  "(length, rotation, clearance), stats. --planner proposed serves the legs\n"
                  "through the proposed planner (paper V: decomposition samples and steering,\n"
                  "legs shared within the tour; --reuse to choose among samples, steering,\n"
-                 "paths, shortcuts and proofs).\n"
+                 "paths, shortcuts, budget and proofs).\n"
                  "Exit 0 whether or not a tour is found; 2 for a bad scene or an unknown\n"
                  "object id.\n";
     return 0;
@@ -167,8 +167,8 @@ int cmd_tour(const Argv& argv) {
   }
   const geometry::CSpace cspace(scene);
   const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  const auto reuse =
-      planner_option(args, "samples,steering,paths,shortcuts,proofs", "samples,steering,paths");
+  const auto reuse = planner_option(args, "samples,steering,paths,shortcuts,budget,proofs",
+                                    "samples,steering,paths");
   std::unique_ptr<planning::ReusePlanner> proposed;
   if (reuse) {
     proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, planning::TourOptions{},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -54,40 +55,53 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 ReuseOptions ReuseOptions::none() {
   ReuseOptions o;
-  o.samples = o.steering = o.paths = o.trees = o.failures = o.shortcuts = o.proofs = false;
+  o.samples = o.steering = o.paths = o.trees = o.failures = o.shortcuts = o.budget = o.proofs =
+      false;
   return o;
 }
 
 ReuseOptions ReuseOptions::parse(std::string_view list) {
   ReuseOptions o = none();
   if (list == "none") return o;
+  auto field = [&o](std::string_view name) -> bool* {
+    if (name == "samples") return &o.samples;
+    if (name == "steering") return &o.steering;
+    if (name == "paths") return &o.paths;
+    if (name == "trees") return &o.trees;
+    if (name == "failures") return &o.failures;
+    if (name == "shortcuts") return &o.shortcuts;
+    if (name == "budget") return &o.budget;
+    if (name == "proofs") return &o.proofs;
+    return nullptr;
+  };
   std::size_t start = 0;
   while (start <= list.size()) {
     const std::size_t end = std::min(list.find(',', start), list.size());
-    const std::string_view name = list.substr(start, end - start);
-    if (name == "all") {
+    std::string_view name = list.substr(start, end - start);
+    const bool off = !name.empty() && name.front() == '-';
+    if (off) name.remove_prefix(1);
+    if (!off && name.starts_with("budget=")) {
+      const std::string digits(name.substr(7));
+      char* stop = nullptr;
+      const long n = std::strtol(digits.c_str(), &stop, 10);
+      if (digits.empty() || *stop != '\0' || n < 1 || n > 1'000'000)
+        throw InputError("--reuse: '" + std::string(name) +
+                         "': budget=N needs a whole number of RRT iterations in 1..1000000");
+      o.budget = true;
+      o.budget_iterations = static_cast<int>(n);
+    } else if (name == "all" && !off) {
       const ReuseOptions d;  // every technique that is on by default
       o.samples |= d.samples, o.steering |= d.steering, o.paths |= d.paths, o.trees |= d.trees;
-      o.failures |= d.failures, o.shortcuts |= d.shortcuts, o.proofs |= d.proofs;
-    } else if (name == "samples") {
-      o.samples = true;
-    } else if (name == "steering") {
-      o.steering = true;
-    } else if (name == "paths") {
-      o.paths = true;
-    } else if (name == "trees") {
-      o.trees = true;
-    } else if (name == "failures") {
-      o.failures = true;
-    } else if (name == "shortcuts") {
-      o.shortcuts = true;
-    } else if (name == "proofs") {
-      o.proofs = true;
+      o.failures |= d.failures, o.shortcuts |= d.shortcuts, o.budget |= d.budget;
+      o.proofs |= d.proofs;
+    } else if (bool* f = field(name)) {
+      *f = !off;
     } else {
-      throw InputError(
-          "--reuse: unknown technique '" + std::string(name) +
-          "' (all, none, or a comma list of all, samples, steering, paths, trees, failures, "
-          "shortcuts, proofs)");
+      throw InputError("--reuse: unknown technique '" +
+                       std::string(list.substr(start, end - start)) +
+                       "' (all, none, or a comma list of all, samples, steering, paths, trees, "
+                       "failures, shortcuts, budget, budget=N, proofs; -NAME turns one off, e.g. "
+                       "all,-budget)");
     }
     start = end + 1;
   }
@@ -96,7 +110,7 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
 
 std::string ReuseOptions::names() const {
   std::string out;
-  auto add = [&](bool on, const char* name) {
+  auto add = [&](bool on, const std::string& name) {
     if (!on) return;
     if (!out.empty()) out += ',';
     out += name;
@@ -107,6 +121,9 @@ std::string ReuseOptions::names() const {
   add(trees, "trees");
   add(failures, "failures");
   add(shortcuts, "shortcuts");
+  add(budget, budget_iterations == ReuseOptions{}.budget_iterations
+                  ? std::string("budget")
+                  : "budget=" + std::to_string(budget_iterations));
   add(proofs, "proofs");
   return out.empty() ? "none" : out;
 }
@@ -506,9 +523,9 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     }
     out.stats.collision_checks += checks;
   }
-  const int budget = planner.options().max_iterations;
+  const int budget = fresh_budget(planner.options().max_iterations);
   const bool staged = options_.proofs && options_.proof_after < budget;
-  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : -1);
+  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget);
   add_stats(out.stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
   if (!r.found && staged) {

@@ -19,6 +19,7 @@
 // outcomes into the stores in key order. Leg seeds depend on the iteration
 // seed and the key, never on the tour.
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -54,6 +55,15 @@ struct ReuseOptions {
   //! shortened first (shorten_path), so that reused paths are not the
   //! RRT's detours: without it, reuse trades tour length for time.
   bool shortcuts = true;
+  //! Beyond the paper (its Fig. "rrt-it": a path that is found at all is
+  //! nearly always found in few RRT iterations): a fresh plan stops after
+  //! `budget_iterations` RRT iterations instead of the planner's own cap
+  //! (3000). A leg that would have needed more fails and the tour tries its
+  //! next pose pair: this trades a few hard legs for the time every failing
+  //! leg used to cost, which the final costs must absorb (measured in
+  //! docs/BENCHMARKS.md). Repairs keep their own, smaller budget.
+  bool budget = true;
+  int budget_iterations = 300;  //!< RRT iterations of a fresh plan with `budget` on
   //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
   //! found the leg after `proof_after` RRT iterations asks geometry::FreeGrid
   //! whether the leg's ends are in different components of a certified outer
@@ -80,13 +90,15 @@ struct ReuseOptions {
 
   //! True when at least one technique is on; all off is the baseline exactly.
   bool any() const {
-    return samples || steering || paths || trees || failures || shortcuts || proofs;
+    return samples || steering || paths || trees || failures || shortcuts || budget || proofs;
   }
   //! Every technique off.
   static ReuseOptions none();
   //! Parses "none" or a comma list of samples, steering, paths, trees,
-  //! failures, shortcuts, proofs and "all" (every technique on by default,
-  //! i.e. all but proofs); the ones listed are on. hrs::InputError otherwise.
+  //! failures, shortcuts, budget, proofs and "all" (every technique on by
+  //! default, i.e. all but proofs), applied left to right: a name turns its
+  //! technique on, -name turns it off ("all,-budget"). hrs::InputError
+  //! for any other item.
   static ReuseOptions parse(std::string_view list);
   //! The comma list of the techniques on ("none" when none).
   std::string names() const;
@@ -246,6 +258,10 @@ class ReusePlanner final : public LegProvider {
   const TreeStore& trees() const { return trees_; }
   //! Null when neither samples nor steering is on.
   const rs::Decomposition* decomposition() const { return decomposition_.get(); }
+  //! RRT iterations a fresh plan may run: `planner_cap`, or less with `budget`.
+  int fresh_budget(int planner_cap) const {
+    return options_.budget ? std::min(options_.budget_iterations, planner_cap) : planner_cap;
+  }
 
  private:
   struct Slot;

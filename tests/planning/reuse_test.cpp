@@ -47,6 +47,24 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   EXPECT_EQ(o.names(), "paths,trees");
   EXPECT_EQ(ReuseOptions::none().names(), "none");
   EXPECT_THROW(ReuseOptions::parse("paths,bogus"), InputError);
+  // "all" is every default technique (budget included, proofs not); -name
+  // turns one off, left to right.
+  EXPECT_EQ(ReuseOptions::parse("all").names(),
+            "samples,steering,paths,trees,failures,shortcuts,budget");
+  EXPECT_EQ(ReuseOptions::parse("all,-budget").names(),
+            "samples,steering,paths,trees,failures,shortcuts");
+  EXPECT_EQ(ReuseOptions::parse("all,-budget,budget").names(), ReuseOptions::parse("all").names());
+  EXPECT_EQ(ReuseOptions::parse("budget").names(), "budget");
+  EXPECT_TRUE(ReuseOptions::parse("budget").any());
+  EXPECT_FALSE(ReuseOptions::parse("budget,-budget").any());
+  EXPECT_THROW(ReuseOptions::parse("all,-bogus"), InputError);
+  EXPECT_THROW(ReuseOptions::parse("-all"), InputError);
+  const ReuseOptions b = ReuseOptions::parse("all,budget=800");
+  EXPECT_TRUE(b.budget);
+  EXPECT_EQ(b.budget_iterations, 800);
+  EXPECT_EQ(ReuseOptions::parse(b.names()).budget_iterations, 800);  // names() round-trips
+  for (const char* bad : {"budget=", "budget=0", "budget=-5", "budget=12x", "budget=2000000"})
+    EXPECT_THROW(ReuseOptions::parse(bad), InputError) << bad;
 }
 
 TEST(DecompositionSampler, SamplesLieInTheRoomBox) {
@@ -259,6 +277,68 @@ TEST(ReusePlanner, SameKeySameOutcomeAndUnchangedLayoutIsServedFromTheDatabase) 
   const ReuseCounters counters = reuse.end_iteration();
   EXPECT_EQ(counters.legs_database, 1u);
   EXPECT_EQ(counters.leg_requests, 1u);
+}
+
+// `budget` checked against a second run of the same legs at the full cap:
+// the capped RRT is a prefix of the full one (same seed, same iterations),
+// so a leg is found under the budget exactly when the full run found it
+// within the budget, and then by the same path; otherwise it fails after
+// exactly the budget. Object-to-object legs of three scenes (hundreds, some
+// needing more than the budget, so both outcomes are exercised).
+TEST(ReusePlanner, BudgetFindsExactlyTheLegsTheFullRunFoundWithinIt) {
+  const ReuseOptions capped = ReuseOptions::parse("failures,budget");
+  const ReuseOptions full = ReuseOptions::parse("failures");
+  const int budget = capped.budget_iterations;
+  int legs = 0, within = 0, beyond = 0, neither = 0;
+  for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::CSpace cspace(scene);
+    ReusePlanner a(scene, cspace, {}, capped, 3), b(scene, cspace, {}, full, 3);
+    LegPlanner pa(scene, cspace, {}, a.hooks().planner), pb(scene, cspace, {}, b.hooks().planner);
+    ASSERT_LT(budget, pb.options().max_iterations);
+    const int n = static_cast<int>(scene.objects.size());
+    std::vector<std::vector<GoalPose>> goals;
+    for (const auto& o : scene.objects) goals.push_back(goal_poses(scene, o, o.pose, cspace));
+    a.begin_iteration(11);
+    b.begin_iteration(11);
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        if (i == j) continue;
+        for (std::size_t s = 0; s < std::min<std::size_t>(goals[i].size(), 3); ++s) {
+          for (std::size_t t = 0; t < std::min<std::size_t>(goals[j].size(), 3); ++t) {
+            const GoalPose& from = goals[i][s];
+            const GoalPose& to = goals[j][t];
+            const LegKey key{i, j, from.slot, to.slot};
+            const LegOutcome x = a.resolve(key, from.pose, to.pose, 0, true, pa);
+            const LegOutcome y = b.resolve(key, from.pose, to.pose, 0, true, pb);
+            const std::string where = file + " leg " + std::to_string(i) + ":" +
+                                      std::to_string(from.slot) + " -> " + std::to_string(j) + ":" +
+                                      std::to_string(to.slot);
+            ++legs;
+            EXPECT_LE(x.stats.iterations, budget) << where;
+            if (y.found && y.stats.iterations <= budget) {
+              ++within;
+              ASSERT_TRUE(x.found) << where;
+              EXPECT_EQ(x.stats.iterations, y.stats.iterations) << where;
+              EXPECT_EQ(x.path.segments, y.path.segments) << where;
+            } else {
+              (y.found ? beyond : neither) += 1;
+              EXPECT_FALSE(x.found) << where;
+              EXPECT_EQ(x.stats.iterations, budget) << where;
+            }
+          }
+        }
+      }
+    }
+    a.end_iteration();
+    b.end_iteration();
+  }
+  std::printf("%d legs: %d found within the budget, %d only by the full run, %d by neither\n", legs,
+              within, beyond, neither);
+  EXPECT_GT(legs, 300);
+  EXPECT_GT(within, 50);
+  EXPECT_GT(beyond, 0) << "no leg needed more than the budget: the check is vacuous";
 }
 
 }  // namespace
