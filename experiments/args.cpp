@@ -168,14 +168,7 @@ std::optional<planning::ReuseOptions> planner_option(const Args& args, const std
   planning::ReuseOptions o = planning::ReuseOptions::parse(list);
   const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
   planning::ReuseOptions extra = planning::ReuseOptions::none();
-  extra.samples = o.samples && !ok.samples;
-  extra.steering = o.steering && !ok.steering;
-  extra.paths = o.paths && !ok.paths;
-  extra.trees = o.trees && !ok.trees;
-  extra.failures = o.failures && !ok.failures;
-  extra.shortcuts = o.shortcuts && !ok.shortcuts;
-  extra.budget = o.budget && !ok.budget;
-  extra.proofs = o.proofs && !ok.proofs;
+  for (const auto& t : planning::ReuseOptions::techniques()) extra.*t.on = o.*t.on && !(ok.*t.on);
   if (extra.any())
     throw InputError("--reuse: '" + list + "': " + extra.names() +
                      " would do nothing here; this command takes " + allowed +

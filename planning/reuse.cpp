@@ -53,33 +53,39 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 // ---- ReuseOptions -----------------------------------------------------------
 
+const std::array<ReuseOptions::Technique, 8>& ReuseOptions::techniques() {
+  static const std::array<Technique, 8> list{{{"samples", &ReuseOptions::samples},
+                                              {"steering", &ReuseOptions::steering},
+                                              {"paths", &ReuseOptions::paths},
+                                              {"trees", &ReuseOptions::trees},
+                                              {"failures", &ReuseOptions::failures},
+                                              {"shortcuts", &ReuseOptions::shortcuts},
+                                              {"budget", &ReuseOptions::budget},
+                                              {"proofs", &ReuseOptions::proofs}}};
+  return list;
+}
+
+bool ReuseOptions::any() const {
+  return std::ranges::any_of(techniques(), [this](const Technique& t) { return this->*t.on; });
+}
+
 ReuseOptions ReuseOptions::none() {
   ReuseOptions o;
-  o.samples = o.steering = o.paths = o.trees = o.failures = o.shortcuts = o.budget = o.proofs =
-      false;
+  for (const Technique& t : techniques()) o.*t.on = false;
   return o;
 }
 
 ReuseOptions ReuseOptions::parse(std::string_view list) {
   ReuseOptions o = none();
   if (list == "none") return o;
-  auto field = [&o](std::string_view name) -> bool* {
-    if (name == "samples") return &o.samples;
-    if (name == "steering") return &o.steering;
-    if (name == "paths") return &o.paths;
-    if (name == "trees") return &o.trees;
-    if (name == "failures") return &o.failures;
-    if (name == "shortcuts") return &o.shortcuts;
-    if (name == "budget") return &o.budget;
-    if (name == "proofs") return &o.proofs;
-    return nullptr;
-  };
   std::size_t start = 0;
   while (start <= list.size()) {
     const std::size_t end = std::min(list.find(',', start), list.size());
-    std::string_view name = list.substr(start, end - start);
-    const bool off = !name.empty() && name.front() == '-';
-    if (off) name.remove_prefix(1);
+    const std::string_view item = list.substr(start, end - start);
+    const bool off = item.starts_with('-');
+    const std::string_view name = off ? item.substr(1) : item;
+    const auto t =
+        std::ranges::find_if(techniques(), [name](const Technique& x) { return name == x.name; });
     if (!off && name.starts_with("budget=")) {
       const std::string digits(name.substr(7));
       char* stop = nullptr;
@@ -91,14 +97,11 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
       o.budget_iterations = static_cast<int>(n);
     } else if (name == "all" && !off) {
       const ReuseOptions d;  // every technique that is on by default
-      o.samples |= d.samples, o.steering |= d.steering, o.paths |= d.paths, o.trees |= d.trees;
-      o.failures |= d.failures, o.shortcuts |= d.shortcuts, o.budget |= d.budget;
-      o.proofs |= d.proofs;
-    } else if (bool* f = field(name)) {
-      *f = !off;
+      for (const Technique& x : techniques()) o.*x.on = o.*x.on || d.*x.on;
+    } else if (t != techniques().end()) {
+      o.*t->on = !off;
     } else {
-      throw InputError("--reuse: unknown technique '" +
-                       std::string(list.substr(start, end - start)) +
+      throw InputError("--reuse: unknown technique '" + std::string(item) +
                        "' (all, none, or a comma list of all, samples, steering, paths, trees, "
                        "failures, shortcuts, budget, budget=N, proofs; -NAME turns one off, e.g. "
                        "all,-budget)");
@@ -110,21 +113,13 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
 
 std::string ReuseOptions::names() const {
   std::string out;
-  auto add = [&](bool on, const std::string& name) {
-    if (!on) return;
+  for (const Technique& t : techniques()) {
+    if (!(this->*t.on)) continue;
     if (!out.empty()) out += ',';
-    out += name;
-  };
-  add(samples, "samples");
-  add(steering, "steering");
-  add(paths, "paths");
-  add(trees, "trees");
-  add(failures, "failures");
-  add(shortcuts, "shortcuts");
-  add(budget, budget_iterations == ReuseOptions{}.budget_iterations
-                  ? std::string("budget")
-                  : "budget=" + std::to_string(budget_iterations));
-  add(proofs, "proofs");
+    out += t.name;
+    if (t.on == &ReuseOptions::budget && budget_iterations != ReuseOptions{}.budget_iterations)
+      out.append("=").append(std::to_string(budget_iterations));
+  }
   return out.empty() ? "none" : out;
 }
 
@@ -523,7 +518,8 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     }
     out.stats.collision_checks += checks;
   }
-  const int budget = fresh_budget(planner.options().max_iterations);
+  const int cap = planner.options().max_iterations;
+  const int budget = options_.budget ? std::min(options_.budget_iterations, cap) : cap;
   const bool staged = options_.proofs && options_.proof_after < budget;
   LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget);
   add_stats(out.stats, r.stats);

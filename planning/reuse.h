@@ -19,7 +19,7 @@
 // outcomes into the stores in key order. Leg seeds depend on the iteration
 // seed and the key, never on the tour.
 
-#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -88,10 +88,17 @@ struct ReuseOptions {
   int decomposition_initial = 1000;  //!< K of the decomposition (paper: 1000)
   int decomposition_stop = 100;      //!< consecutive agreeing samples ending it (paper: 100)
 
+  //! A technique's --reuse name and its switch.
+  struct Technique {
+    const char* name;
+    bool ReuseOptions::*on;
+  };
+  //! Every technique, in the order names() lists them: the one list that
+  //! parse(), names(), any() and none() go through.
+  static const std::array<Technique, 8>& techniques();
+
   //! True when at least one technique is on; all off is the baseline exactly.
-  bool any() const {
-    return samples || steering || paths || trees || failures || shortcuts || budget || proofs;
-  }
+  bool any() const;
   //! Every technique off.
   static ReuseOptions none();
   //! Parses "none" or a comma list of samples, steering, paths, trees,
@@ -258,10 +265,6 @@ class ReusePlanner final : public LegProvider {
   const TreeStore& trees() const { return trees_; }
   //! Null when neither samples nor steering is on.
   const rs::Decomposition* decomposition() const { return decomposition_.get(); }
-  //! RRT iterations a fresh plan may run: `planner_cap`, or less with `budget`.
-  int fresh_budget(int planner_cap) const {
-    return options_.budget ? std::min(options_.budget_iterations, planner_cap) : planner_cap;
-  }
 
  private:
   struct Slot;
