@@ -16,6 +16,7 @@
 #include "geometry/cspace.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -188,8 +189,7 @@ void CSpace::rebuild_object_pieces(int index) {
     piece.normals = edge_normals(piece.local);
     s.pieces.push_back(std::move(piece));
   }
-  s.world_boundary.clear();
-  for (const Vec2& v : s.footprint) s.world_boundary.push_back(to_world(s.pose, v));
+  set_world_boundary(s);
 }
 
 void CSpace::fill_piece(const Slice& slice, const ConvexPiece& shape, SlicePiece& out,
@@ -243,8 +243,7 @@ void CSpace::move_object(int index, const Pose2& pose) {
       }
     }
   } else {
-    s.world_boundary.clear();
-    for (const Vec2& v : s.footprint) s.world_boundary.push_back(to_world(s.pose, v));
+    set_world_boundary(s);
   }
   place_object(index);
 }
@@ -446,30 +445,85 @@ bool CSpace::arc_free(const Pose2& start, double radius, double turn, int gear) 
   return false;  // unreachable for finite input
 }
 
-Clearance CSpace::clearance(const Pose2& pose) const {
-  const Vec2 p = pose.position();
-  const Vec2 left{-std::sin(pose.theta), std::cos(pose.theta)};
-  double best[2] = {std::numeric_limits<double>::infinity(),
-                    std::numeric_limits<double>::infinity()};
-  auto visit = [&](Vec2 a, Vec2 b) {
+namespace {
+
+//! Squared distance from `p` to the segment [a, b] (no hypot: metres in a
+//! room are far from overflow, and the square root is taken once per side).
+double squared_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  double t = len2 > 0.0 ? dot(p - a, ab) / len2 : 0.0;
+  t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+  const Vec2 d = p - (a + t * ab);
+  return dot(d, d);
+}
+
+//! Folds the squared distances from `p` to the closed polygon `ring`, each
+//! edge clipped to the closed half-plane left (side 0) or right (side 1) of
+//! heading `left`, into `best`, recording `owner` on each side it lowers.
+void visit_ring(const std::vector<Vec2>& ring, Vec2 p, Vec2 left, int owner, double best[2],
+                int owners[2]) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Vec2 a = ring[i], b = ring[(i + 1) % ring.size()];
     const double sa = dot(a - p, left), sb = dot(b - p, left);
     for (int side = 0; side < 2; ++side) {
-      const double sgn = side == 0 ? 1.0 : -1.0;  // 0: left, 1: right
+      const double sgn = side == 0 ? 1.0 : -1.0;
       const double da = sgn * sa, db = sgn * sb;
       if (da < 0 && db < 0) continue;
-      // Clip the segment to the closed half-plane {sgn·(x−p)·left >= 0}.
       Vec2 ca = a, cb = b;
       if (da < 0) ca = a + (da / (da - db)) * (b - a);
       if (db < 0) cb = b + (db / (db - da)) * (a - b);
-      best[side] = std::min(best[side], point_segment_distance(p, ca, cb));
+      const double d = squared_distance(p, ca, cb);
+      if (d < best[side]) {
+        best[side] = d;
+        owners[side] = owner;
+      }
     }
-  };
-  for (std::size_t i = 0; i < room_.size(); ++i) visit(room_[i], room_[(i + 1) % room_.size()]);
-  for (const ObjectState& o : objects_) {
-    const auto& w = o.world_boundary;
-    for (std::size_t i = 0; i < w.size(); ++i) visit(w[i], w[(i + 1) % w.size()]);
   }
-  return {best[0], best[1]};
+}
+
+Vec2 left_of(const Pose2& pose) { return {-std::sin(pose.theta), std::cos(pose.theta)}; }
+
+}  // namespace
+
+void CSpace::set_world_boundary(ObjectState& s) {
+  s.world_boundary.clear();
+  for (const Vec2& v : s.footprint) s.world_boundary.push_back(to_world(s.pose, v));
+  Box& b = s.world_box;
+  b = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+       -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const Vec2& v : s.world_boundary)
+    b = {std::min(b.xmin, v.x), std::min(b.ymin, v.y), std::max(b.xmax, v.x),
+         std::max(b.ymax, v.y)};
+}
+
+CSpace::NearestObstacles CSpace::nearest_obstacles(const Pose2& pose) const {
+  const Vec2 p = pose.position(), left = left_of(pose);
+  double best[2] = {std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+  int owners[2] = {kNothing, kNothing};
+  visit_ring(room_, p, left, kWalls, best, owners);
+  for (std::size_t k = 0; k < objects_.size(); ++k) {
+    // Every boundary point is in the object's box: when the box is farther
+    // than both sides' best (with a margin far above the rounding of these
+    // squared distances), no edge can lower either side.
+    const Box& b = objects_[k].world_box;
+    const double dx = std::max({b.xmin - p.x, 0.0, p.x - b.xmax});
+    const double dy = std::max({b.ymin - p.y, 0.0, p.y - b.ymax});
+    if ((dx * dx + dy * dy) * (1.0 - 1e-9) > std::max(best[0], best[1])) continue;
+    visit_ring(objects_[k].world_boundary, p, left, static_cast<int>(k), best, owners);
+  }
+  return {{std::sqrt(best[0]), std::sqrt(best[1])}, owners[0], owners[1]};
+}
+
+Clearance CSpace::clearance(const Pose2& pose) const { return nearest_obstacles(pose).clearance; }
+
+Clearance CSpace::object_clearance(const Pose2& pose, int index) const {
+  double best[2] = {std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+  int owners[2] = {kNothing, kNothing};
+  visit_ring(objects_[index].world_boundary, pose.position(), left_of(pose), index, best, owners);
+  return {std::sqrt(best[0]), std::sqrt(best[1])};
 }
 
 std::size_t CSpace::piece_count() const {

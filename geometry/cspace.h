@@ -62,6 +62,22 @@ class CSpace {
 
   //! Nearest obstacle boundary (furniture or wall) left and right of `pose`.
   Clearance clearance(const Pose2& pose) const;
+  //! clearance() and which obstacle gives each side's value: the index of an
+  //! object, kWalls, or kNothing (no boundary on that side). The values are
+  //! clearance()'s to the last bit.
+  struct NearestObstacles {
+    Clearance clearance;
+    int left = kNothing, right = kNothing;
+  };
+  static constexpr int kWalls = -1;
+  static constexpr int kNothing = -2;
+  NearestObstacles nearest_obstacles(const Pose2& pose) const;
+  //! clearance() against object `index` alone (infinity on a side without
+  //! its boundary). Since clearance() is the minimum over walls and objects
+  //! of exactly these values, a clearance measured before object i moved is
+  //! brought up to date by min(old, object_clearance(pose, i)) on each side
+  //! whose nearest obstacle was not i (used by planning::LegMeasures).
+  Clearance object_clearance(const Pose2& pose, int index) const;
 
   //! Total convex C-obstacle pieces over all slices (for reports).
   std::size_t piece_count() const;
@@ -84,6 +100,7 @@ class CSpace {
     std::vector<Polygon> local_pieces;  //!< convex pieces of footprint, local frame
     std::vector<ConvexPiece> pieces;    //!< rotated by pose.theta
     std::vector<Vec2> world_boundary;   //!< world footprint for clearance
+    Box world_box;                      //!< bounding box of world_boundary
   };
   //! A C-obstacle piece in one slice: half-planes at the origin (base) and in
   //! the world, plus its bounding box.
@@ -117,6 +134,8 @@ class CSpace {
   void build_slice_shapes(const Wheelchair& chair);
   void build_walls(const Polygon& room, double reach);
   void rebuild_object_pieces(int index);
+  //! Sets the world footprint and its box from the pose.
+  static void set_world_boundary(ObjectState& s);
   void place_object(int index);
   void fill_piece(const Slice& slice, const ConvexPiece& shape, SlicePiece& out,
                   std::vector<Halfplane>& base) const;

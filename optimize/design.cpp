@@ -31,13 +31,16 @@ std::uint64_t splitmix64(std::uint64_t x) {
 
 }  // namespace
 
-bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour) {
+bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour,
+                  planning::LegMeasures* measures) {
   if (!tour.found) return true;
   planning::MotionValidator validator(cspace, radius);
   for (std::size_t i = 0; i < tour.legs.size(); ++i) {
     const auto& leg = tour.legs[i];
     const double length = leg.path.length();
-    if (validator.certified_prefix(leg.from, leg.path, kRecheckPiece) < length - 1e-9) {
+    const double prefix = measures ? measures->certified_prefix(leg, kRecheckPiece)
+                                   : validator.certified_prefix(leg.from, leg.path, kRecheckPiece);
+    if (prefix < length - 1e-9) {
       tour.found = false;
       tour.legs.clear();
       tour.metrics = {};
@@ -115,7 +118,10 @@ class TourRound {
     pool_.run(m, [&](int k) {
       planners_[k]->set_seed(tour_seed(options_.seed, iteration, k));
       tours_[k] = planners_[k]->plan((*sequences_)[k].nodes);
-      invalidated_[k] = recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k]) ? 0 : 1;
+      invalidated_[k] = recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k],
+                                     reuse_ ? reuse_->measures() : nullptr)
+                            ? 0
+                            : 1;
     });
     if (reuse_) legs = reuse_->end_iteration();
     int dropped = 0;

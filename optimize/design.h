@@ -40,12 +40,12 @@ namespace hrs::optimize {
 
 struct DesignOptions {
   std::uint64_t seed = 1;
-  int iterations = 700;           //!< annealing iterations (paper: 700)
-  int threads = 0;                //!< tour-planning threads, caller included (0: all cores)
+  int iterations = 700;            //!< annealing iterations (paper: 700)
+  int threads = 0;                 //!< tour-planning threads, caller included (0: all cores)
   double t_start_fraction = 0.03;  //!< t_start = this × initial total cost (docs/optimize.md)
-  double t_end_ratio = 1e-3;      //!< t_end = this × t_start
-  AnnealOptions anneal;           //!< moves; its temperatures and iterations are set from above
-  planning::TourOptions tour;     //!< the tour planner (baseline)
+  double t_end_ratio = 1e-3;       //!< t_end = this × t_start
+  AnnealOptions anneal;            //!< moves; its temperatures and iterations are set from above
+  planning::TourOptions tour;      //!< the tour planner (baseline)
   geometry::CSpaceOptions cspace;
   //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
   bool proposed = false;
@@ -104,10 +104,10 @@ DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
 //! A planner-only run over a fixed sequence of layouts.
 struct ReplayResult {
   int layouts = 0;
-  double planning_s = 0.0;  //!< wall time of planning the M tours of every layout
-  double setup_s = 0.0;     //!< building the C-space and planners (the decomposition)
-  long tours_total = 0;     //!< tours asked for: layouts × M
-  long tours_found = 0;     //!< found tours, summed over the layouts
+  double planning_s = 0.0;   //!< wall time of planning the M tours of every layout
+  double setup_s = 0.0;      //!< building the C-space and planners (the decomposition)
+  long tours_total = 0;      //!< tours asked for: layouts × M
+  long tours_found = 0;      //!< found tours, summed over the layouts
   double tour_length = 0.0;  //!< their path lengths summed (metres)
   int tours_invalidated = 0;
   planning::ReuseCounters counters;  //!< the proposed planner's
@@ -129,7 +129,9 @@ inline constexpr double kRecheckPiece = 0.05;
 //! counts (MotionValidator::certified_prefix); a tour with a leg that is not
 //! certified free becomes unfound (stats.depth = the failing leg). Returns
 //! false when it did so. Guards the outputs against planner defects.
-bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour);
+//! With `measures`, the certified prefixes come through it (the same values).
+bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour,
+                  planning::LegMeasures* measures = nullptr);
 
 //! Seed of tour k in planning round `iteration` (0: the initial layout; round r is
 //! the r-th proposal that passed the exact checks, so rejected-before-planning

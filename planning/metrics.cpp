@@ -21,14 +21,21 @@ double rotation_of(const std::vector<geometry::Pose2>& waypoints) {
 
 PathMetrics measure(const geometry::CSpace& cspace, const std::vector<geometry::Pose2>& waypoints,
                     double length) {
+  std::vector<geometry::Clearance> clearances;
+  clearances.reserve(waypoints.size());
+  for (const geometry::Pose2& p : waypoints) clearances.push_back(cspace.clearance(p));
+  return metrics_of(waypoints, length, clearances);
+}
+
+PathMetrics metrics_of(const std::vector<geometry::Pose2>& waypoints, double length,
+                       const std::vector<geometry::Clearance>& clearances) {
   PathMetrics m;
   m.length = length;
   m.rotation = rotation_of(waypoints);
   m.waypoints = static_cast<int>(waypoints.size());
   if (waypoints.empty()) return m;
   double sum = 0.0, deficit = 0.0, narrowest = std::numeric_limits<double>::infinity();
-  for (const geometry::Pose2& p : waypoints) {
-    const geometry::Clearance c = cspace.clearance(p);
+  for (const geometry::Clearance& c : clearances) {
     const double w = c.left + c.right;
     sum += w;
     deficit += std::max(0.0, kReferenceWidth - w);

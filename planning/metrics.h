@@ -36,6 +36,10 @@ double rotation_of(const std::vector<geometry::Pose2>& waypoints);
 //! All metrics of a path given by its waypoints and its length.
 PathMetrics measure(const geometry::CSpace& cspace, const std::vector<geometry::Pose2>& waypoints,
                     double length);
+//! measure() given the clearance at each waypoint: the one summation both
+//! measure() and planning::LegMeasures use, so their results agree bit for bit.
+PathMetrics metrics_of(const std::vector<geometry::Pose2>& waypoints, double length,
+                       const std::vector<geometry::Clearance>& clearances);
 //! Combines per-leg metrics into one (lengths and rotations add, clearance
 //! means are weighted by waypoint counts).
 PathMetrics combine(const std::vector<PathMetrics>& parts);

@@ -53,14 +53,15 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 // ---- ReuseOptions -----------------------------------------------------------
 
-const std::array<ReuseOptions::Technique, 8>& ReuseOptions::techniques() {
-  static const std::array<Technique, 8> list{{{"samples", &ReuseOptions::samples},
+const std::array<ReuseOptions::Technique, 9>& ReuseOptions::techniques() {
+  static const std::array<Technique, 9> list{{{"samples", &ReuseOptions::samples},
                                               {"steering", &ReuseOptions::steering},
                                               {"paths", &ReuseOptions::paths},
                                               {"trees", &ReuseOptions::trees},
                                               {"failures", &ReuseOptions::failures},
                                               {"shortcuts", &ReuseOptions::shortcuts},
                                               {"budget", &ReuseOptions::budget},
+                                              {"metrics", &ReuseOptions::metrics},
                                               {"proofs", &ReuseOptions::proofs}}};
   return list;
 }
@@ -358,6 +359,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
     if (options_.samples) sampler_ = std::make_unique<DecompositionSampler>(*decomposition_, scene);
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
   }
+  if (options_.metrics) measures_ = std::make_unique<LegMeasures>(cspace, radius_);
 }
 
 ReusePlanner::~ReusePlanner() = default;
@@ -367,6 +369,7 @@ TourHooks ReusePlanner::hooks() {
   h.provider = this;
   h.planner.sampler = sampler_.get();
   h.planner.steering = steering_.get();
+  h.measures = measures_.get();
   return h;
 }
 

@@ -33,6 +33,7 @@
 #include "geometry/free_grid.h"
 #include "geometry/pose.h"
 #include "geometry/scene.h"
+#include "planning/leg_measures.h"
 #include "planning/motion_validator.h"
 #include "planning/rrt.h"
 #include "planning/tour.h"
@@ -63,6 +64,11 @@ struct ReuseOptions {
   //! leg used to cost, which the final costs must absorb (measured in
   //! docs/BENCHMARKS.md). Repairs keep their own, smaller budget.
   bool budget = true;
+  //! Beyond the paper: the clearance metrics and the re-certification of a
+  //! found leg are kept (planning/leg_measures.h) and brought up to date
+  //! instead of recomputed, by the tours that share the leg and in later
+  //! layouts. Exact: the results are the fresh ones to the last bit.
+  bool metrics = true;
   int budget_iterations = 300;  //!< RRT iterations of a fresh plan with `budget` on
   //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
   //! found the leg after `proof_after` RRT iterations asks geometry::FreeGrid
@@ -95,14 +101,14 @@ struct ReuseOptions {
   };
   //! Every technique, in the order names() lists them: the one list that
   //! parse(), names(), any() and none() go through.
-  static const std::array<Technique, 8>& techniques();
+  static const std::array<Technique, 9>& techniques();
 
   //! True when at least one technique is on; all off is the baseline exactly.
   bool any() const;
   //! Every technique off.
   static ReuseOptions none();
   //! Parses "none" or a comma list of samples, steering, paths, trees,
-  //! failures, shortcuts, budget, proofs and "all" (every technique on by
+  //! failures, shortcuts, budget, metrics, proofs and "all" (every technique on by
   //! default, i.e. all but proofs), applied left to right: a name turns its
   //! technique on, -name turns it off ("all,-budget"). hrs::InputError
   //! for any other item.
@@ -265,6 +271,8 @@ class ReusePlanner final : public LegProvider {
   const TreeStore& trees() const { return trees_; }
   //! Null when neither samples nor steering is on.
   const rs::Decomposition* decomposition() const { return decomposition_.get(); }
+  //! Null unless `metrics` is on.
+  LegMeasures* measures() { return measures_.get(); }
 
  private:
   struct Slot;
@@ -297,6 +305,7 @@ class ReusePlanner final : public LegProvider {
   std::unique_ptr<rs::Decomposition> decomposition_;
   std::unique_ptr<DecompositionSampler> sampler_;
   std::unique_ptr<DecompositionSteering> steering_;
+  std::unique_ptr<LegMeasures> measures_;
   PathDatabase database_;
   TreeStore trees_;
   std::map<LegKey, Failure> failures_;

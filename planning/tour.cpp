@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geometry/error.h"
+#include "planning/leg_measures.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
@@ -96,8 +97,12 @@ Tour TourPlanner::plan(const std::vector<std::string>& sequence) {
   if (tour.found) {
     std::vector<PathMetrics> parts;
     for (Leg& leg : legs) {
-      leg.waypoints = waypoints_of(leg.from, leg.path, options_.waypoint_step);
-      leg.metrics = measure(*cspace_, leg.waypoints, leg.path.length());
+      if (hooks_.measures) {
+        hooks_.measures->measure(leg, options_.waypoint_step);
+      } else {
+        leg.waypoints = waypoints_of(leg.from, leg.path, options_.waypoint_step);
+        leg.metrics = measure(*cspace_, leg.waypoints, leg.path.length());
+      }
       parts.push_back(leg.metrics);
     }
     tour.metrics = combine(parts);

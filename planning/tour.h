@@ -125,12 +125,17 @@ class LegProvider {
                              std::uint64_t tour_seed, bool may_plan, LegPlanner& planner) = 0;
 };
 
+class LegMeasures;
+
 struct TourHooks {
   LegCache* legs = nullptr;    //!< null: no path database (baseline)
   TreeCache* trees = nullptr;  //!< null: a fresh tree per leg (baseline)
   PlannerHooks planner;        //!< sampler / steering of the leg planner
   //! Non-null: legs come from here and `legs` / `trees` are not used.
   LegProvider* provider = nullptr;
+  //! Non-null: found legs are measured through it (same results, work kept
+  //! across tours and layouts: planning/leg_measures.h); null: afresh.
+  LegMeasures* measures = nullptr;
 };
 
 struct Leg {

@@ -156,5 +156,93 @@ TEST(CSpace, IncrementalUpdateEqualsRebuild) {
   }
 }
 
+// Clearance by an independent formulation: each boundary segment is
+// parametrized a + t(b − a); the part on one side of the heading is an
+// interval of t, and the nearest point of that part is the projection of the
+// position clamped to the interval. Walls and every object's world footprint.
+struct BruteClearance {
+  double side[2];
+  int owner[2];
+};
+BruteClearance brute_clearance(const Scene& scene, const Pose2& pose) {
+  const Vec2 p = pose.position(), left{-std::sin(pose.theta), std::cos(pose.theta)};
+  BruteClearance c{{INFINITY, INFINITY}, {CSpace::kNothing, CSpace::kNothing}};
+  auto ring = [&](const Polygon& poly, int owner) {
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const Vec2 a = poly[i], b = poly[(i + 1) % poly.size()], ab = b - a;
+      const double sa = dot(a - p, left), sd = dot(ab, left);  // s(t) = sa + t·sd
+      for (int side = 0; side < 2; ++side) {
+        const double g = side == 0 ? 1.0 : -1.0;  // want g·s(t) >= 0
+        double lo = 0.0, hi = 1.0;
+        if (g * sd > 0)
+          lo = std::max(lo, -sa / sd);
+        else if (g * sd < 0)
+          hi = std::min(hi, -sa / sd);
+        else if (g * sa < 0)
+          continue;
+        if (lo > hi) continue;
+        const double l2 = dot(ab, ab);
+        const double t = std::clamp(l2 > 0 ? dot(p - a, ab) / l2 : 0.0, lo, hi);
+        const double d = norm(p - (a + t * ab));
+        if (d < c.side[side]) c.side[side] = d, c.owner[side] = owner;
+      }
+    }
+  };
+  ring(scene.room.polygon, CSpace::kWalls);
+  for (std::size_t k = 0; k < scene.objects.size(); ++k)
+    ring(world_footprint(scene.objects[k]), static_cast<int>(k));
+  return c;
+}
+
+TEST(CSpace, NearestObstaclesMatchBruteForceAndObjectClearances) {
+  long cases = 0, object_owned = 0, wall_owned = 0;
+  for (const std::string& file : testing::scene_files()) {
+    Scene scene = load_scene(file);
+    CSpace cs(scene);
+    std::mt19937_64 rng(21);
+    std::uniform_int_distribution<int> which(0, static_cast<int>(scene.objects.size()) - 1);
+    for (int round = 0; round < 20; ++round) {
+      // Move an object anywhere (clearance is defined whatever the layout).
+      const int k = which(rng);
+      const Pose2 to = random_pose(scene, rng);
+      scene.objects[k].pose = to;
+      cs.move_object(k, to);
+      for (int q = 0; q < 200; ++q, ++cases) {
+        const Pose2 pose = random_pose(scene, rng);
+        const CSpace::NearestObstacles n = cs.nearest_obstacles(pose);
+        const BruteClearance b = brute_clearance(scene, pose);
+        const Clearance plain = cs.clearance(pose);
+        ASSERT_EQ(plain.left, n.clearance.left);
+        ASSERT_EQ(plain.right, n.clearance.right);
+        const double ours[2] = {n.clearance.left, n.clearance.right};
+        const int owners[2] = {n.left, n.right};
+        for (int side = 0; side < 2; ++side) {
+          ASSERT_NEAR(ours[side], b.side[side], 1e-9) << file << " side " << side;
+          // The owner's own clearance is the value; no object is nearer.
+          double lowest = INFINITY;
+          for (int o = 0; o < cs.object_count(); ++o) {
+            const Clearance oc = cs.object_clearance(pose, o);
+            const double v = side == 0 ? oc.left : oc.right;
+            ASSERT_GE(v, ours[side]) << file << " object " << o;
+            lowest = std::min(lowest, v);
+            if (o == owners[side]) ASSERT_EQ(v, ours[side]) << file;
+          }
+          if (owners[side] == CSpace::kWalls) {
+            ++wall_owned;
+            ASSERT_GE(lowest, ours[side]) << file;  // walls, visited first, win ties
+          } else {
+            ASSERT_GE(owners[side], 0) << file;
+            ++object_owned;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(object_owned, 1000);
+  EXPECT_GT(wall_owned, 1000);
+  std::printf("%ld poses: %ld sides nearest an object, %ld nearest a wall\n", cases, object_owned,
+              wall_owned);
+}
+
 }  // namespace
 }  // namespace hrs::geometry

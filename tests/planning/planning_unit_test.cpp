@@ -15,6 +15,8 @@
 #include "geometry/cspace.h"
 #include "geometry/scene.h"
 #include "planning/goals.h"
+#include "planning/leg_measures.h"
+#include "planning/metrics.h"
 #include "planning/motion_validator.h"
 #include "planning/nearest.h"
 #include "planning/path_ops.h"
@@ -242,6 +244,80 @@ TEST(MotionValidator, CertifiedPrefixCertifiesMoreButNothingBlocked) {
   EXPECT_GT(blocked, 0) << "no blocked path: the test checks nothing";
   std::printf("certified_prefix went past free_prefix on %d paths, %d paths blocked\n", refined,
               blocked);
+}
+
+// LegMeasures (technique `metrics`) answers bit for bit what measuring afresh
+// answers, across random object moves, moves undone, and legs whose path
+// changed; every way of answering (stored, updated, afresh) occurs.
+TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
+  LegMeasures::Counters total;
+  long cases = 0;
+  for (const std::string& file : testing::planning_scene_files()) {
+    geometry::Scene scene = geometry::load_scene(file);
+    geometry::CSpace cspace(scene);
+    const double r = scene.wheelchair.turning_radius;
+    LegMeasures measures(cspace, r);
+    MotionValidator validator(cspace, r);
+    std::mt19937_64 rng(31);
+    const int n = static_cast<int>(scene.objects.size());
+    std::vector<Leg> legs(24);
+    auto new_path = [&](Leg& leg) {
+      leg.from = testing::random_free_pose(scene, cspace, rng);
+      leg.path = rs::shortest_path(leg.from, testing::random_free_pose(scene, cspace, rng), r);
+    };
+    for (std::size_t i = 0; i < legs.size(); ++i) {
+      legs[i].key = LegKey{static_cast<int>(i) % (n + 1) - 1, static_cast<int>(i / 2), 0, 0};
+      new_path(legs[i]);
+    }
+    std::vector<std::pair<int, Pose2>> undo;
+    for (int step = 0; step < 150; ++step) {
+      const double action = testing::unit01(rng);
+      if (action < 0.5) {  // move an object anywhere in the room
+        const int k = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
+        undo.emplace_back(k, cspace.object_pose(k));
+        cspace.move_object(k, testing::random_pose(scene, rng));
+      } else if (action < 0.7 && !undo.empty()) {  // a rejected move: back to the old pose
+        cspace.move_object(undo.back().first, undo.back().second);
+        undo.pop_back();
+      } else if (action < 0.85) {  // a leg served by another path now
+        new_path(legs[rng() % legs.size()]);
+      }
+      for (int q = 0; q < 8; ++q, ++cases) {
+        Leg& leg = legs[rng() % legs.size()];
+        measures.measure(leg, kWaypointStep);
+        const std::vector<Pose2> waypoints = waypoints_of(leg.from, leg.path, kWaypointStep);
+        const PathMetrics fresh = measure(cspace, waypoints, leg.path.length());
+        ASSERT_EQ(leg.waypoints, waypoints) << file << " step " << step;
+        ASSERT_EQ(leg.metrics.length, fresh.length);
+        ASSERT_EQ(leg.metrics.rotation, fresh.rotation);
+        ASSERT_EQ(leg.metrics.clearance, fresh.clearance) << file << " step " << step;
+        ASSERT_EQ(leg.metrics.min_clearance, fresh.min_clearance) << file << " step " << step;
+        ASSERT_EQ(leg.metrics.clearance_deficit, fresh.clearance_deficit);
+        ASSERT_EQ(leg.metrics.waypoints, fresh.waypoints);
+        ASSERT_EQ(measures.certified_prefix(leg, 0.05),
+                  validator.certified_prefix(leg.from, leg.path, 0.05))
+            << file << " step " << step;
+      }
+    }
+    const LegMeasures::Counters c = measures.counters();
+    total.metrics_same += c.metrics_same;
+    total.metrics_updated += c.metrics_updated;
+    total.metrics_fresh += c.metrics_fresh;
+    total.certified_same += c.certified_same;
+    total.certified_fresh += c.certified_fresh;
+  }
+  EXPECT_GT(total.metrics_same, 100u);
+  EXPECT_GT(total.metrics_updated, 1000u);
+  EXPECT_GT(total.metrics_fresh, 100u);
+  EXPECT_GT(total.certified_same, 100u);
+  std::printf(
+      "%ld legs measured: metrics stored %lu, updated %lu, afresh %lu; certified stored "
+      "%lu, afresh %lu\n",
+      cases, static_cast<unsigned long>(total.metrics_same),
+      static_cast<unsigned long>(total.metrics_updated),
+      static_cast<unsigned long>(total.metrics_fresh),
+      static_cast<unsigned long>(total.certified_same),
+      static_cast<unsigned long>(total.certified_fresh));
 }
 
 TEST(GoalPoses, FaceTheCentreLieOnAllowedSidesAtTheGapAndAreFree) {

@@ -50,9 +50,10 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   // "all" is every default technique (budget included, proofs not); -name
   // turns one off, left to right.
   EXPECT_EQ(ReuseOptions::parse("all").names(),
-            "samples,steering,paths,trees,failures,shortcuts,budget");
+            "samples,steering,paths,trees,failures,shortcuts,budget,metrics");
   EXPECT_EQ(ReuseOptions::parse("all,-budget").names(),
-            "samples,steering,paths,trees,failures,shortcuts");
+            "samples,steering,paths,trees,failures,shortcuts,metrics");
+  EXPECT_EQ(ReuseOptions::parse("metrics").names(), "metrics");
   EXPECT_EQ(ReuseOptions::parse("all,-budget,budget").names(), ReuseOptions::parse("all").names());
   EXPECT_EQ(ReuseOptions::parse("budget").names(), "budget");
   EXPECT_TRUE(ReuseOptions::parse("budget").any());

@@ -1,0 +1,124 @@
+#include "planning/leg_measures.h"
+
+#include <algorithm>
+
+#include "planning/motion_validator.h"
+
+namespace hrs::planning {
+
+namespace {
+
+bool same_path(const rs::Path& a, const rs::Path& b) {
+  return a.radius == b.radius && a.segments == b.segments;
+}
+
+}  // namespace
+
+std::vector<Pose2> LegMeasures::layout() const {
+  std::vector<Pose2> poses;
+  poses.reserve(static_cast<std::size_t>(cspace_->object_count()));
+  for (int i = 0; i < cspace_->object_count(); ++i) poses.push_back(cspace_->object_pose(i));
+  return poses;
+}
+
+void LegMeasures::measure(Leg& leg, double step) {
+  std::shared_ptr<const MetricsEntry> old;
+  {
+    std::lock_guard lock(mutex_);
+    auto it = metrics_.find(leg.key);
+    if (it != metrics_.end()) old = it->second;
+  }
+  std::vector<Pose2> now = layout();
+  if (old && !(old->step == step && old->from == leg.from && same_path(old->path, leg.path)))
+    old.reset();
+
+  auto entry = std::make_shared<MetricsEntry>();
+  entry->step = step;
+  entry->from = leg.from;
+  entry->path = leg.path;
+  std::vector<int> moved;
+  if (old) {
+    for (std::size_t i = 0; i < now.size(); ++i)
+      if (!(now[i] == old->layout[i])) moved.push_back(static_cast<int>(i));
+    if (moved.empty()) {
+      leg.waypoints = old->waypoints;
+      leg.metrics = old->metrics;
+      std::lock_guard lock(mutex_);
+      ++counters_.metrics_same;
+      return;
+    }
+    entry->waypoints = old->waypoints;
+    entry->nearest = old->nearest;
+    for (std::size_t w = 0; w < entry->waypoints.size(); ++w) {
+      const Pose2& p = entry->waypoints[w];
+      geometry::CSpace::NearestObstacles& n = entry->nearest[w];
+      auto moved_object = [&](int owner) {
+        return std::find(moved.begin(), moved.end(), owner) != moved.end();
+      };
+      if (moved_object(n.left) || moved_object(n.right)) {
+        n = cspace_->nearest_obstacles(p);  // the nearest obstacle moved: afresh
+        continue;
+      }
+      for (int k : moved) {
+        const geometry::Clearance d = cspace_->object_clearance(p, k);
+        if (d.left < n.clearance.left) {
+          n.clearance.left = d.left;
+          n.left = k;
+        }
+        if (d.right < n.clearance.right) {
+          n.clearance.right = d.right;
+          n.right = k;
+        }
+      }
+    }
+  } else {
+    entry->waypoints = waypoints_of(leg.from, leg.path, step);
+    entry->nearest.reserve(entry->waypoints.size());
+    for (const Pose2& p : entry->waypoints) entry->nearest.push_back(cspace_->nearest_obstacles(p));
+  }
+  std::vector<geometry::Clearance> clearances;
+  clearances.reserve(entry->nearest.size());
+  for (const auto& n : entry->nearest) clearances.push_back(n.clearance);
+  entry->metrics = metrics_of(entry->waypoints, leg.path.length(), clearances);
+  entry->layout = std::move(now);
+  leg.waypoints = entry->waypoints;
+  leg.metrics = entry->metrics;
+  std::lock_guard lock(mutex_);
+  ++(old ? counters_.metrics_updated : counters_.metrics_fresh);
+  metrics_[leg.key] = std::move(entry);
+}
+
+double LegMeasures::certified_prefix(const Leg& leg, double piece) {
+  std::vector<Pose2> now = layout();
+  {
+    std::lock_guard lock(mutex_);
+    auto it = certified_.find(leg.key);
+    if (it != certified_.end()) {
+      const CertifiedEntry& e = *it->second;
+      if (e.piece == piece && e.from == leg.from && same_path(e.path, leg.path) &&
+          e.layout == now) {
+        ++counters_.certified_same;
+        return e.prefix;
+      }
+    }
+  }
+  MotionValidator validator(*cspace_, radius_);
+  auto entry = std::make_shared<CertifiedEntry>();
+  entry->from = leg.from;
+  entry->path = leg.path;
+  entry->piece = piece;
+  entry->layout = std::move(now);
+  entry->prefix = validator.certified_prefix(leg.from, leg.path, piece);
+  const double prefix = entry->prefix;
+  std::lock_guard lock(mutex_);
+  ++counters_.certified_fresh;
+  certified_[leg.key] = std::move(entry);
+  return prefix;
+}
+
+LegMeasures::Counters LegMeasures::counters() const {
+  std::lock_guard lock(mutex_);
+  return counters_;
+}
+
+}  // namespace hrs::planning
