@@ -53,16 +53,24 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 // ---- ReuseOptions -----------------------------------------------------------
 
-const std::array<ReuseOptions::Technique, 9>& ReuseOptions::techniques() {
-  static const std::array<Technique, 9> list{{{"samples", &ReuseOptions::samples},
-                                              {"steering", &ReuseOptions::steering},
-                                              {"paths", &ReuseOptions::paths},
-                                              {"trees", &ReuseOptions::trees},
-                                              {"failures", &ReuseOptions::failures},
-                                              {"shortcuts", &ReuseOptions::shortcuts},
-                                              {"budget", &ReuseOptions::budget},
-                                              {"metrics", &ReuseOptions::metrics},
-                                              {"proofs", &ReuseOptions::proofs}}};
+const std::array<ReuseOptions::Technique, 10>& ReuseOptions::techniques() {
+  static const std::array<Technique, 10> list{{{"samples", &ReuseOptions::samples},
+                                               {"steering", &ReuseOptions::steering},
+                                               {"paths", &ReuseOptions::paths},
+                                               {"trees", &ReuseOptions::trees},
+                                               {"failures", &ReuseOptions::failures},
+                                               {"shortcuts", &ReuseOptions::shortcuts},
+                                               {"budget", &ReuseOptions::budget},
+                                               {"metrics", &ReuseOptions::metrics},
+                                               {"backoff", &ReuseOptions::backoff},
+                                               {"proofs", &ReuseOptions::proofs}}};
+  return list;
+}
+
+const std::array<ReuseOptions::Parameter, 2>& ReuseOptions::parameters() {
+  static const std::array<Parameter, 2> list{
+      {{"budget", &ReuseOptions::budget_iterations, "RRT iterations"},
+       {"backoff", &ReuseOptions::backoff_floor, "RRT iterations"}}};
   return list;
 }
 
@@ -87,25 +95,34 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
     const std::string_view name = off ? item.substr(1) : item;
     const auto t =
         std::ranges::find_if(techniques(), [name](const Technique& x) { return name == x.name; });
-    if (!off && name.starts_with("budget=")) {
-      const std::string digits(name.substr(7));
+    const std::size_t eq = name.find('=');
+    const auto p = std::ranges::find_if(parameters(), [&](const Parameter& x) {
+      return eq != std::string_view::npos && name.substr(0, eq) == x.technique;
+    });
+    if (!off && p != parameters().end()) {
+      const std::string digits(name.substr(eq + 1));
       char* stop = nullptr;
       const long n = std::strtol(digits.c_str(), &stop, 10);
       if (digits.empty() || *stop != '\0' || n < 1 || n > 1'000'000)
-        throw InputError("--reuse: '" + std::string(name) +
-                         "': budget=N needs a whole number of RRT iterations in 1..1000000");
-      o.budget = true;
-      o.budget_iterations = static_cast<int>(n);
+        throw InputError("--reuse: '" + std::string(name) + "': " + p->technique +
+                         "=N needs a whole number of " + p->unit + " in 1..1000000");
+      const auto named = std::ranges::find_if(techniques(), [&](const Technique& x) {
+        return std::string_view(x.name) == p->technique;
+      });
+      o.*named->on = true;
+      o.*p->value = static_cast<int>(n);
     } else if (name == "all" && !off) {
       const ReuseOptions d;  // every technique that is on by default
       for (const Technique& x : techniques()) o.*x.on = o.*x.on || d.*x.on;
     } else if (t != techniques().end()) {
       o.*t->on = !off;
     } else {
+      std::string known;
+      for (const Technique& x : techniques()) known.append(", ").append(x.name);
+      for (const Parameter& x : parameters()) known.append(", ").append(x.technique).append("=N");
       throw InputError("--reuse: unknown technique '" + std::string(item) +
-                       "' (all, none, or a comma list of all, samples, steering, paths, trees, "
-                       "failures, shortcuts, budget, budget=N, proofs; -NAME turns one off, e.g. "
-                       "all,-budget)");
+                       "' (all, none, or a comma list of all" + known +
+                       "; -NAME turns one off, e.g. all,-budget)");
     }
     start = end + 1;
   }
@@ -118,8 +135,10 @@ std::string ReuseOptions::names() const {
     if (!(this->*t.on)) continue;
     if (!out.empty()) out += ',';
     out += t.name;
-    if (t.on == &ReuseOptions::budget && budget_iterations != ReuseOptions{}.budget_iterations)
-      out.append("=").append(std::to_string(budget_iterations));
+    for (const Parameter& x : parameters()) {
+      if (std::string_view(t.name) == x.technique && this->*x.value != ReuseOptions{}.*x.value)
+        out.append("=").append(std::to_string(this->*x.value));
+    }
   }
   return out.empty() ? "none" : out;
 }
@@ -522,7 +541,14 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     out.stats.collision_checks += checks;
   }
   const int cap = planner.options().max_iterations;
-  const int budget = options_.budget ? std::min(options_.budget_iterations, cap) : cap;
+  int budget = options_.budget ? std::min(options_.budget_iterations, cap) : cap;
+  if (options_.backoff) {
+    const auto it = failed_in_a_row_.find(key);
+    if (it != failed_in_a_row_.end()) {
+      const int halvings = std::min(it->second, 30);
+      budget = std::max(std::min(options_.backoff_floor, budget), budget >> halvings);
+    }
+  }
   const bool staged = options_.proofs && options_.proof_after < budget;
   LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget);
   add_stats(out.stats, r.stats);
@@ -713,6 +739,12 @@ ReuseCounters ReusePlanner::end_iteration() {
       } else if (slot->planned.found) {
         failures_.erase(key);
       }
+    }
+    if (options_.backoff && slot->planned_done && outcome == &slot->planned) {
+      if (outcome->found)
+        failed_in_a_row_.erase(key);
+      else
+        ++failed_in_a_row_[key];
     }
     if (options_.paths && outcome) {
       if (outcome->found) {

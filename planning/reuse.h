@@ -69,6 +69,15 @@ struct ReuseOptions {
   //! instead of recomputed, by the tours that share the leg and in later
   //! layouts. Exact: the results are the fresh ones to the last bit.
   bool metrics = true;
+  //! Beyond the paper: a leg (by key) whose fresh plans failed k times in a
+  //! row gets the fresh-plan budget halved k times, down to
+  //! `backoff_floor` RRT iterations, and the whole budget again once found.
+  //! The failures of a design run repeat by key (goal poses in tight spots
+  //! fail layout after layout), and a leg that is found at all is nearly
+  //! always found in few iterations (Fig. "rrt-it"). A heuristic: a leg that
+  //! needs more than its reduced budget fails (measured in docs/BENCHMARKS.md).
+  bool backoff = true;
+  int backoff_floor = 10;       //!< RRT iterations a backed-off fresh plan keeps at least
   int budget_iterations = 300;  //!< RRT iterations of a fresh plan with `budget` on
   //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
   //! found the leg after `proof_after` RRT iterations asks geometry::FreeGrid
@@ -101,17 +110,25 @@ struct ReuseOptions {
   };
   //! Every technique, in the order names() lists them: the one list that
   //! parse(), names(), any() and none() go through.
-  static const std::array<Technique, 9>& techniques();
+  static const std::array<Technique, 10>& techniques();
+  //! A technique's numeric parameter, set by NAME=N (budget=500, backoff=10).
+  struct Parameter {
+    const char* technique;
+    int ReuseOptions::*value;
+    const char* unit;
+  };
+  static const std::array<Parameter, 2>& parameters();
 
   //! True when at least one technique is on; all off is the baseline exactly.
   bool any() const;
   //! Every technique off.
   static ReuseOptions none();
   //! Parses "none" or a comma list of samples, steering, paths, trees,
-  //! failures, shortcuts, budget, metrics, proofs and "all" (every technique on by
+  //! failures, shortcuts, budget, metrics, backoff, proofs and "all" (every technique on by
   //! default, i.e. all but proofs), applied left to right: a name turns its
-  //! technique on, -name turns it off ("all,-budget"). hrs::InputError
-  //! for any other item.
+  //! technique on, -name turns it off ("all,-budget"), NAME=N turns it on
+  //! with parameter N (budget=500, backoff=10). hrs::InputError for any
+  //! other item.
   static ReuseOptions parse(std::string_view list);
   //! The comma list of the techniques on ("none" when none).
   std::string names() const;
@@ -309,6 +326,8 @@ class ReusePlanner final : public LegProvider {
   PathDatabase database_;
   TreeStore trees_;
   std::map<LegKey, Failure> failures_;
+  //! `backoff`: fresh plans of the key that failed in a row since last found.
+  std::map<LegKey, int> failed_in_a_row_;
   geometry::Scene scene_;  //!< footprints for failure_repeats(), the proof grid
   //! The proof grid and its per-thread searches; built on the first proof,
   //! moved to the current layout at the first proof of each iteration.

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -50,9 +52,9 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   // "all" is every default technique (budget included, proofs not); -name
   // turns one off, left to right.
   EXPECT_EQ(ReuseOptions::parse("all").names(),
-            "samples,steering,paths,trees,failures,shortcuts,budget,metrics");
+            "samples,steering,paths,trees,failures,shortcuts,budget,metrics,backoff");
   EXPECT_EQ(ReuseOptions::parse("all,-budget").names(),
-            "samples,steering,paths,trees,failures,shortcuts,metrics");
+            "samples,steering,paths,trees,failures,shortcuts,metrics,backoff");
   EXPECT_EQ(ReuseOptions::parse("metrics").names(), "metrics");
   EXPECT_EQ(ReuseOptions::parse("all,-budget,budget").names(), ReuseOptions::parse("all").names());
   EXPECT_EQ(ReuseOptions::parse("budget").names(), "budget");
@@ -64,7 +66,12 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   EXPECT_TRUE(b.budget);
   EXPECT_EQ(b.budget_iterations, 800);
   EXPECT_EQ(ReuseOptions::parse(b.names()).budget_iterations, 800);  // names() round-trips
-  for (const char* bad : {"budget=", "budget=0", "budget=-5", "budget=12x", "budget=2000000"})
+  const ReuseOptions f = ReuseOptions::parse("all,-backoff,backoff=25");
+  EXPECT_TRUE(f.backoff);
+  EXPECT_EQ(f.backoff_floor, 25);
+  EXPECT_EQ(ReuseOptions::parse(f.names()).backoff_floor, 25);
+  for (const char* bad : {"budget=", "budget=0", "budget=-5", "budget=12x", "budget=2000000",
+                          "backoff=", "backoff=0", "samples=3", "-budget=5"})
     EXPECT_THROW(ReuseOptions::parse(bad), InputError) << bad;
 }
 
@@ -340,6 +347,64 @@ TEST(ReusePlanner, BudgetFindsExactlyTheLegsTheFullRunFoundWithinIt) {
   EXPECT_GT(legs, 300);
   EXPECT_GT(within, 50);
   EXPECT_GT(beyond, 0) << "no leg needed more than the budget: the check is vacuous";
+}
+
+// `backoff`: a leg whose fresh plans failed k times in a row is planned with
+// the budget halved k times (not below the floor), and with the whole budget
+// again once found. Checked against that schedule kept independently here,
+// over eight rounds (a new iteration seed each) of the object-to-object legs.
+TEST(ReusePlanner, BackoffHalvesTheBudgetOfLegsThatKeepFailing) {
+  const ReuseOptions o = ReuseOptions::parse("budget,backoff");
+  const int budget = o.budget_iterations, floor = o.backoff_floor;
+  ASSERT_LT(floor, budget);
+  int floored = 0, found_after_failing = 0, failed_after_found = 0, checked = 0;
+  for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::CSpace cspace(scene);
+    ReusePlanner reuse(scene, cspace, {}, o, 5);
+    LegPlanner planner(scene, cspace, {}, reuse.hooks().planner);
+    const int n = static_cast<int>(scene.objects.size());
+    std::vector<std::vector<GoalPose>> goals;
+    for (const auto& obj : scene.objects) goals.push_back(goal_poses(scene, obj, obj.pose, cspace));
+    std::map<LegKey, int> streak;  // failures in a row, as the schedule says
+    std::map<LegKey, bool> ever_found;
+    for (int round = 0; round < 8; ++round) {
+      reuse.begin_iteration(100 + static_cast<std::uint64_t>(round));
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+          if (i == j) continue;
+          for (std::size_t s = 0; s < std::min<std::size_t>(goals[i].size(), 2); ++s) {
+            for (std::size_t t = 0; t < std::min<std::size_t>(goals[j].size(), 2); ++t) {
+              const LegKey key{i, j, goals[i][s].slot, goals[j][t].slot};
+              const int k = streak[key];
+              const int cap = k == 0 ? budget : std::max(floor, budget >> std::min(k, 30));
+              const LegOutcome x =
+                  reuse.resolve(key, goals[i][s].pose, goals[j][t].pose, 0, true, planner);
+              ++checked;
+              if (x.found) {
+                EXPECT_LE(x.stats.iterations, cap) << file << " round " << round;
+                if (k > 0) ++found_after_failing;
+                streak[key] = 0;
+                ever_found[key] = true;
+              } else {
+                EXPECT_EQ(x.stats.iterations, cap) << file << " round " << round;
+                if (cap == floor) ++floored;
+                if (k == 0 && ever_found[key]) ++failed_after_found;
+                streak[key] = k + 1;
+              }
+            }
+          }
+        }
+      }
+      reuse.end_iteration();
+    }
+  }
+  std::printf("%d plans: %d failed at the floor, %d found after failing, %d failed after found\n",
+              checked, floored, found_after_failing, failed_after_found);
+  EXPECT_GT(floored, 20);
+  EXPECT_GT(found_after_failing, 0);
+  EXPECT_GT(failed_after_found, 0);
 }
 
 }  // namespace
