@@ -91,11 +91,17 @@ int main(int argc, char** argv) {
   const char* rooms_env = std::getenv("HRSPACE_REPLAY_ROOMS");
   const std::vector<std::string> rooms =
       bench::split_list(rooms_env ? rooms_env : "bedroom,office,living_room");
-  // "all" (the defaults), all but the budget, with the opt-in proofs, then
-  // each technique alone.
-  const std::vector<std::string> configs{"baseline", "all",       "all,-budget", "all,proofs",
-                                         "paths",    "trees",     "samples",     "steering",
-                                         "failures", "shortcuts", "budget",      "proofs"};
+  // "all" (the defaults), all but one of the heuristics, with the opt-in
+  // proofs, then each technique alone.
+  // HRSPACE_REPLAY_CONFIGS replaces the list ('all;all,backoff=60': semicolons
+  // when a config has commas).
+  const char* configs_env = std::getenv("HRSPACE_REPLAY_CONFIGS");
+  const std::vector<std::string> configs =
+      configs_env ? bench::split_list(configs_env)
+                  : std::vector<std::string>{
+                        "baseline",  "all",    "all,-budget", "all,-backoff", "all,proofs",
+                        "paths",     "trees",  "samples",     "steering",     "failures",
+                        "shortcuts", "budget", "metrics",     "backoff",      "proofs"};
   static std::map<std::string, Recording> recordings;
   for (const std::string& room : rooms) {
     Recording& rec = recordings[room];
