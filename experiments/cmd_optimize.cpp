@@ -66,7 +66,7 @@ constexpr const char* kDesignUsage =
     "                              kept and updated for the objects that moved, not redone\n"
     "                              (beyond the paper; exact)\n"
     "                    backoff   a leg that keeps failing gets half the RRT budget at each\n"
-    "                              failure, down to 10 iterations (backoff=N: down to N); the\n"
+    "                              failure, down to 120 iterations (backoff=N: down to N); the\n"
     "                              whole budget again once found (beyond the paper)\n"
     "                    proofs    opt-in, not in all: a leg still unplanned after 300 RRT\n"
     "                              iterations whose ends a certified grid separates fails\n"
