@@ -54,6 +54,25 @@ int main(int argc, char** argv) {
                                          {"rooms", "bedroom,office,living_room"},
                                          {"configs", "baseline,all"},
                                          {"out", "reuse_timing.csv"}};
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") {
+      std::printf(
+          "usage: reuse_timing [--iterations N] [--seeds K] [--threads T] [--rooms LIST]\n"
+          "                    [--configs LIST] [--out FILE]\n"
+          "Designs each room (scenes/ROOM.json) with seeds 1..K under each config and\n"
+          "prints mean +- sd of planning time, total time and final cost per (room, config);\n"
+          "one CSV line per design goes to FILE (default reuse_timing.csv).\n"
+          "Configs: baseline or any --reuse list of hrspace design; with commas inside\n"
+          "a config, separate configs by semicolons: 'baseline;all;all,-budget'.\n"
+          "Defaults: 700 iterations, 10 seeds, all cores, bedroom,office,living_room,\n"
+          "baseline,all.\n");
+      return 0;
+    }
+  }
+  if (argc % 2 == 0) {
+    std::fprintf(stderr, "option %s needs a value (see --help)\n", argv[argc - 1]);
+    return 2;
+  }
   for (int i = 1; i + 1 < argc; i += 2) {
     std::string k = argv[i];
     if (k.rfind("--", 0) != 0 || !opt.count(k.substr(2))) {

@@ -49,12 +49,12 @@ void LegMeasures::measure(Leg& leg, double step) {
     }
     entry->waypoints = old->waypoints;
     entry->nearest = old->nearest;
+    auto moved_object = [&](int owner) {
+      return std::find(moved.begin(), moved.end(), owner) != moved.end();
+    };
     for (std::size_t w = 0; w < entry->waypoints.size(); ++w) {
       const Pose2& p = entry->waypoints[w];
       geometry::CSpace::NearestObstacles& n = entry->nearest[w];
-      auto moved_object = [&](int owner) {
-        return std::find(moved.begin(), moved.end(), owner) != moved.end();
-      };
       if (moved_object(n.left) || moved_object(n.right)) {
         n = cspace_->nearest_obstacles(p);  // the nearest obstacle moved: afresh
         continue;

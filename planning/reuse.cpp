@@ -69,8 +69,8 @@ const std::array<ReuseOptions::Technique, 10>& ReuseOptions::techniques() {
 
 const std::array<ReuseOptions::Parameter, 2>& ReuseOptions::parameters() {
   static const std::array<Parameter, 2> list{
-      {{"budget", &ReuseOptions::budget_iterations, "RRT iterations"},
-       {"backoff", &ReuseOptions::backoff_floor, "RRT iterations"}}};
+      {{"budget", &ReuseOptions::budget, &ReuseOptions::budget_iterations, "RRT iterations"},
+       {"backoff", &ReuseOptions::backoff, &ReuseOptions::backoff_floor, "RRT iterations"}}};
   return list;
 }
 
@@ -106,10 +106,7 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
       if (digits.empty() || *stop != '\0' || n < 1 || n > 1'000'000)
         throw InputError("--reuse: '" + std::string(name) + "': " + p->technique +
                          "=N needs a whole number of " + p->unit + " in 1..1000000");
-      const auto named = std::ranges::find_if(techniques(), [&](const Technique& x) {
-        return std::string_view(x.name) == p->technique;
-      });
-      o.*named->on = true;
+      o.*p->on = true;
       o.*p->value = static_cast<int>(n);
     } else if (name == "all" && !off) {
       const ReuseOptions d;  // every technique that is on by default
@@ -136,7 +133,7 @@ std::string ReuseOptions::names() const {
     if (!out.empty()) out += ',';
     out += t.name;
     for (const Parameter& x : parameters()) {
-      if (std::string_view(t.name) == x.technique && this->*x.value != ReuseOptions{}.*x.value)
+      if (t.on == x.on && this->*x.value != ReuseOptions{}.*x.value)
         out.append("=").append(std::to_string(this->*x.value));
     }
   }

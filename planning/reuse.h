@@ -77,7 +77,7 @@ struct ReuseOptions {
   //! always found in few iterations (Fig. "rrt-it"). A heuristic: a leg that
   //! needs more than its reduced budget fails (measured in docs/BENCHMARKS.md).
   bool backoff = true;
-  int backoff_floor = 120;       //!< RRT iterations a backed-off fresh plan keeps at least
+  int backoff_floor = 120;      //!< RRT iterations a backed-off fresh plan keeps at least
   int budget_iterations = 300;  //!< RRT iterations of a fresh plan with `budget` on
   //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
   //! found the leg after `proof_after` RRT iterations asks geometry::FreeGrid
@@ -114,6 +114,7 @@ struct ReuseOptions {
   //! A technique's numeric parameter, set by NAME=N (budget=500, backoff=10).
   struct Parameter {
     const char* technique;
+    bool ReuseOptions::*on;  //!< the technique NAME=N turns on
     int ReuseOptions::*value;
     const char* unit;
   };
