@@ -53,8 +53,8 @@ void add_stats(LegStats& into, const LegStats& more) {
 
 // ---- ReuseOptions -----------------------------------------------------------
 
-const std::array<ReuseOptions::Technique, 10>& ReuseOptions::techniques() {
-  static const std::array<Technique, 10> list{{{"samples", &ReuseOptions::samples},
+const std::array<ReuseOptions::Technique, 11>& ReuseOptions::techniques() {
+  static const std::array<Technique, 11> list{{{"samples", &ReuseOptions::samples},
                                                {"steering", &ReuseOptions::steering},
                                                {"paths", &ReuseOptions::paths},
                                                {"trees", &ReuseOptions::trees},
@@ -63,6 +63,7 @@ const std::array<ReuseOptions::Technique, 10>& ReuseOptions::techniques() {
                                                {"budget", &ReuseOptions::budget},
                                                {"metrics", &ReuseOptions::metrics},
                                                {"backoff", &ReuseOptions::backoff},
+                                               {"speculate", &ReuseOptions::speculate},
                                                {"proofs", &ReuseOptions::proofs}}};
   return list;
 }
@@ -336,6 +337,11 @@ ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
 struct ReusePlanner::Slot {
   std::mutex mutex;
   Pose2 from, to;
+  //! A tour asked for this leg (else only `speculate` computed it: no trace).
+  bool requested = false;
+  bool speculative = false;  //!< computed by speculate_one()
+  //! Its holder is validating or planning (not merely reading a result).
+  std::atomic<bool> working{false};
   bool database_done = false;  //!< stage A ran
   LegOutcome database;
   bool planned_done = false;  //!< stage B ran
@@ -578,6 +584,60 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   return out;
 }
 
+LegOutcome ReusePlanner::settle(const LegKey& key, Slot& slot, bool may_plan,
+                                LegPlanner& planner) const {
+  slot.working = true;
+  if (!slot.database_done) {
+    slot.database = from_database(key, slot.from, slot.to);
+    slot.database_done = true;
+  }
+  if (slot.database.found || !may_plan) {
+    slot.working = false;
+    if (slot.database.found) return slot.database;
+    LegOutcome out;
+    out.planned = true;
+    out.rejected = slot.database.rejected;
+    return out;
+  }
+  if (!slot.planned_done) {
+    slot.planned = plan_leg(key, slot.from, slot.to, leg_seed(iteration_seed_, key), planner, slot);
+    slot.planned.rejected = slot.database.rejected;
+    slot.planned.stats.collision_checks += slot.database.stats.collision_checks;
+    slot.planned_done = true;
+  }
+  slot.working = false;
+  return slot.planned;
+}
+
+bool ReusePlanner::speculate_one(std::span<const LegRequest> next, LegPlanner& planner) {
+  for (const LegRequest& r : next) {
+    Slot* slot = nullptr;
+    {
+      std::lock_guard lock(mutex_);
+      auto& owned = slots_[r.key];
+      if (!owned) {
+        owned = std::make_unique<Slot>();
+        owned->from = r.from;
+        owned->to = r.to;
+      }
+      slot = owned.get();
+    }
+    std::unique_lock lock(slot->mutex, std::try_to_lock);
+    if (!lock.owns_lock()) continue;  // being computed
+    if (slot->planned_done || (slot->database_done && slot->database.found)) continue;
+    settle(r.key, *slot, true, planner);
+    if (!slot->planned_done) continue;  // served by the database: cheap, go on
+    slot->speculative = true;
+    ++speculated_;
+    return true;
+  }
+  return false;
+}
+
+ReusePlanner::Speculation ReusePlanner::speculation() const {
+  return {speculated_.load(), speculated_used_.load()};
+}
+
 bool ReusePlanner::proven_impossible(const Pose2& from, const Pose2& to) const {
   std::unique_ptr<geometry::ReachabilityQuery> query;
   {
@@ -618,7 +678,8 @@ rs::Path ReusePlanner::shortened(const Pose2& from, const rs::Path& path, LegSta
 }
 
 LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pose2& to,
-                                 std::uint64_t tour_seed, bool may_plan, LegPlanner& planner) {
+                                 std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
+                                 std::span<const LegRequest> next) {
   if (!options_.any()) {
     // The baseline exactly: a fresh tree and the tour's own leg seed.
     LegOutcome out;
@@ -651,30 +712,23 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
       owned->to = to;
     }
     slot = owned.get();
+    slot->requested = true;
+  }
+  if (options_.paths) {
+    // Compute once per key and iteration; tours needing the same leg wait,
+    // or with `speculate` first plan their next candidate.
+    std::unique_lock lock(slot->mutex, std::try_to_lock);
+    if (!lock.owns_lock()) {
+      if (options_.speculate && slot->working.load()) speculate_one(next, planner);
+      lock.lock();
+    }
+    if (slot->speculative) {
+      slot->speculative = false;
+      ++speculated_used_;
+    }
+    return settle(key, *slot, may_plan, planner);
   }
   const std::uint64_t seed = leg_seed(iteration_seed_, key);
-  if (options_.paths) {
-    // Compute once per key and iteration; tours needing the same leg wait.
-    std::lock_guard lock(slot->mutex);
-    if (!slot->database_done) {
-      slot->database = from_database(key, from, to);
-      slot->database_done = true;
-    }
-    if (slot->database.found) return slot->database;
-    if (!may_plan) {
-      LegOutcome out;
-      out.planned = true;
-      out.rejected = slot->database.rejected;
-      return out;
-    }
-    if (!slot->planned_done) {
-      slot->planned = plan_leg(key, from, to, seed, planner, *slot);
-      slot->planned.rejected = slot->database.rejected;
-      slot->planned.stats.collision_checks += slot->database.stats.collision_checks;
-      slot->planned_done = true;
-    }
-    return slot->planned;
-  }
   // No sharing (path reuse off): every tour plans; the outcome is the same
   // pure function, so the first copy recorded is as good as any.
   LegOutcome out;
@@ -703,6 +757,7 @@ ReuseCounters ReusePlanner::end_iteration() {
   c.leg_requests += leg_requests_;
   std::set<RootKey> roots;
   for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
+    if (!slot->requested) continue;   // computed by `speculate` only: no trace
     if (slot->database.rejected) ++c.legs_rejected;
     const LegOutcome* outcome = nullptr;
     if (slot->database_done && slot->database.found) {

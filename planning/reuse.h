@@ -20,11 +20,13 @@
 // seed and the key, never on the tour.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -77,6 +79,15 @@ struct ReuseOptions {
   //! always found in few iterations (Fig. "rrt-it"). A heuristic: a leg that
   //! needs more than its reduced budget fails (measured in docs/BENCHMARKS.md).
   bool backoff = true;
+  //! Beyond the paper; changes the work, never an outcome: a tour that asks
+  //! for a leg another tour is planning at that moment (tours of an
+  //! iteration share legs, computed once) plans, instead of waiting, the
+  //! first leg of its own remaining candidates that nobody has started.
+  //! A leg that keeps a tour waiting is usually failing (a found leg stops
+  //! early), so that tour's next candidate is usually needed next. Legs
+  //! computed this way and never asked for leave no trace: counters and
+  //! stores take only the legs the tours asked for. One thread: no effect.
+  bool speculate = true;
   int backoff_floor = 120;      //!< RRT iterations a backed-off fresh plan keeps at least
   int budget_iterations = 300;  //!< RRT iterations of a fresh plan with `budget` on
   //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
@@ -110,7 +121,7 @@ struct ReuseOptions {
   };
   //! Every technique, in the order names() lists them: the one list that
   //! parse(), names(), any() and none() go through.
-  static const std::array<Technique, 10>& techniques();
+  static const std::array<Technique, 11>& techniques();
   //! A technique's numeric parameter, set by NAME=N (budget=500, backoff=10).
   struct Parameter {
     const char* technique;
@@ -281,7 +292,16 @@ class ReusePlanner final : public LegProvider {
   ReuseCounters end_iteration();
 
   LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t tour_seed,
-                     bool may_plan, LegPlanner& planner) override;
+                     bool may_plan, LegPlanner& planner,
+                     std::span<const LegRequest> next = {}) override;
+
+  //! Legs planned by `speculate` and how many of them a tour then asked for
+  //! in the same iteration (depends on thread timing: not for reports).
+  struct Speculation {
+    std::uint64_t planned = 0;
+    std::uint64_t used = 0;
+  };
+  Speculation speculation() const;
 
   const ReuseOptions& options() const { return options_; }
   const ReuseCounters& totals() const { return totals_; }
@@ -308,6 +328,12 @@ class ReusePlanner final : public LegProvider {
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                       LegPlanner& planner, Slot& slot) const;
+  //! Stage A, then (when `may_plan`) stage B, each once per slot; the caller
+  //! holds slot.mutex. The outcome a tour gets.
+  LegOutcome settle(const LegKey& key, Slot& slot, bool may_plan, LegPlanner& planner) const;
+  //! `speculate`: settles the first request of `next` that nobody has
+  //! started, with planning allowed; false when there was none.
+  bool speculate_one(std::span<const LegRequest> next, LegPlanner& planner);
   //! shorten_path() of a found path, its checks counted into `stats`.
   rs::Path shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const;
   //! True when FreeGrid proves that no motion joins `from` and `to` in the
@@ -339,7 +365,8 @@ class ReusePlanner final : public LegProvider {
   mutable std::vector<std::unique_ptr<geometry::ReachabilityQuery>> idle_queries_;
   double reach_ = 0.0;  //!< how far from a node a collision query can look
   std::uint64_t iteration_seed_ = 0;
-  std::mutex mutex_;  //!< guards slots_ and leg_requests_
+  std::mutex mutex_;  //!< guards slots_, leg_requests_ and the slots' `requested`
+  std::atomic<std::uint64_t> speculated_{0}, speculated_used_{0};
   std::map<LegKey, std::unique_ptr<Slot>> slots_;
   std::uint64_t leg_requests_ = 0;
   ReuseCounters unshared_;  //!< all techniques off: legs counted per request

@@ -133,7 +133,19 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
     order.resize(static_cast<std::size_t>(std::max(0, options_.max_candidates)));
   }
 
-  for (const auto& [rs_length, j] : order) {
+  // The same candidates as leg requests: a provider may start on the later
+  // ones while it waits for an earlier one (LegProvider::resolve).
+  std::vector<LegRequest> requests;
+  if (hooks_.provider) {
+    requests.reserve(order.size());
+    for (const auto& [rs_length, j] : order)
+      requests.push_back({{here.object, next.object, here.goals[pose].slot, next.goals[j].slot},
+                          from,
+                          next.goals[j].pose});
+  }
+
+  for (std::size_t c = 0; c < order.size(); ++c) {
+    const int j = order[c].second;
     if (next.dead[j]) continue;  // reached before: its continuation failed
     const Pose2 to = next.goals[j].pose;
     LegKey key{here.object, next.object, here.goals[pose].slot, next.goals[j].slot};
@@ -143,7 +155,8 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
 
     if (hooks_.provider) {
       const bool may_plan = tour.stats.legs_planned < options_.max_leg_plans;
-      LegOutcome outcome = hooks_.provider->resolve(key, from, to, seed_, may_plan, planner_);
+      LegOutcome outcome = hooks_.provider->resolve(key, from, to, seed_, may_plan, planner_,
+                                                    std::span(requests).subspan(c + 1));
       if (outcome.rejected) ++tour.stats.legs_rejected;
       if (outcome.planned) {
         if (!may_plan) {

@@ -27,6 +27,7 @@
 // the order legs are tried.
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -114,15 +115,25 @@ struct LegOutcome {
 //! from parallel tours, so it must be thread-safe, and each outcome must be a
 //! pure function of the key, the poses, the current layout and the
 //! provider's state: then tours agree whatever thread computed a leg first.
+//! A leg a tour may ask for: its key and its ends in the current layout.
+struct LegRequest {
+  LegKey key;
+  Pose2 from, to;
+};
+
 class LegProvider {
  public:
   virtual ~LegProvider() = default;
   //! The outcome of leg `key` from `from` to `to`. `tour_seed` is the calling
   //! tour's seed; `planner` is the calling tour's (per-thread) leg planner.
   //! With `may_plan` false no RRT query is run: an outcome that needs one
-  //! comes back with planned = true and found = false.
+  //! comes back with planned = true and found = false. `next`: the legs the
+  //! tour asks for next, in order, should this one fail (the remaining
+  //! candidates of its search level); a provider may work on them while it
+  //! waits, never changing any outcome.
   virtual LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to,
-                             std::uint64_t tour_seed, bool may_plan, LegPlanner& planner) = 0;
+                             std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
+                             std::span<const LegRequest> next = {}) = 0;
 };
 
 class LegMeasures;

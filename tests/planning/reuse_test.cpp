@@ -10,6 +10,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <span>
+#include <thread>
 
 #include "geometry/cspace.h"
 #include "geometry/error.h"
@@ -52,9 +54,9 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   // "all" is every default technique (budget included, proofs not); -name
   // turns one off, left to right.
   EXPECT_EQ(ReuseOptions::parse("all").names(),
-            "samples,steering,paths,trees,failures,shortcuts,budget,metrics,backoff");
+            "samples,steering,paths,trees,failures,shortcuts,budget,metrics,backoff,speculate");
   EXPECT_EQ(ReuseOptions::parse("all,-budget").names(),
-            "samples,steering,paths,trees,failures,shortcuts,metrics,backoff");
+            "samples,steering,paths,trees,failures,shortcuts,metrics,backoff,speculate");
   EXPECT_EQ(ReuseOptions::parse("metrics").names(), "metrics");
   EXPECT_EQ(ReuseOptions::parse("all,-budget,budget").names(), ReuseOptions::parse("all").names());
   EXPECT_EQ(ReuseOptions::parse("budget").names(), "budget");
@@ -405,6 +407,130 @@ TEST(ReusePlanner, BackoffHalvesTheBudgetOfLegsThatKeepFailing) {
   EXPECT_GT(floored, 20);
   EXPECT_GT(found_after_failing, 0);
   EXPECT_GT(failed_after_found, 0);
+}
+
+// `speculate` changes the work, never an outcome, and legs it computed that
+// no tour asked for leave no trace. The same tour-like requests (from one goal
+// pose, the next object's poses in order, stopping at the first found, each
+// request passing its later candidates as `next`) go to a planner driven by
+// one thread and to one driven by four threads that run the same requests in
+// the same order, so that they collide on the legs being planned and
+// speculate. Every outcome, every iteration's counters (leg_requests aside:
+// four times as many) and hence the stores that feed later iterations must
+// agree, over random moves of two failure-rich scenes.
+TEST(ReusePlanner, SpeculationChangesNoOutcomeAndLeavesNoTrace) {
+  constexpr int kThreads = 4;
+  std::uint64_t requests = 0, failed = 0, speculated = 0, used = 0;
+  for (const std::string file : {"living_room.json", "office.json"}) {
+    geometry::Scene work =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    geometry::CSpace cspace(work);
+    const ReuseOptions options = ReuseOptions::parse("all");
+    ASSERT_TRUE(options.speculate);
+    ReusePlanner one(work, cspace, {}, options, 9), many(work, cspace, {}, options, 9);
+    LegPlanner p1(work, cspace, {}, one.hooks().planner);
+    std::vector<std::unique_ptr<LegPlanner>> pn;
+    for (int t = 0; t < kThreads; ++t)
+      pn.push_back(
+          std::make_unique<LegPlanner>(work, cspace, PlannerOptions{}, many.hooks().planner));
+    const int n = static_cast<int>(work.objects.size());
+    std::mt19937_64 rng(33);
+    for (int iteration = 0; iteration < 24; ++iteration) {
+      if (iteration > 0) {
+        const int moved = static_cast<int>(rng() % n);
+        if (!work.objects[moved].fixed) {
+          Pose2 p = work.objects[moved].pose;
+          p.x += 0.2 * (2 * testing::unit01(rng) - 1);
+          p.y += 0.2 * (2 * testing::unit01(rng) - 1);
+          p.theta = geometry::wrap_angle(p.theta + 0.2 * (2 * testing::unit01(rng) - 1));
+          work.objects[moved].pose = p;
+          cspace.move_object(moved, p);
+        }
+      }
+      // Levels: a start pose and the next object's goal poses, as candidates.
+      std::vector<std::vector<LegRequest>> levels;
+      std::vector<std::vector<GoalPose>> goals;
+      for (int i = 0; i < n; ++i)
+        goals.push_back(goal_poses(work, work.objects[i], cspace.object_pose(i), cspace));
+      for (int l = 0; l < 24; ++l) {
+        const int a = static_cast<int>(rng() % n);
+        const int b = (a + 1 + static_cast<int>(rng() % (n - 1))) % n;
+        if (goals[a].empty() || goals[b].empty()) continue;
+        const GoalPose& from = goals[a][rng() % goals[a].size()];
+        std::vector<LegRequest> level;
+        for (std::size_t t = 0; t < std::min<std::size_t>(goals[b].size(), 6); ++t)
+          level.push_back({{a, b, from.slot, goals[b][t].slot}, from.pose, goals[b][t].pose});
+        levels.push_back(std::move(level));
+      }
+      // Outcome of each (level, candidate) asked, by whoever asked it.
+      auto run = [&](ReusePlanner& reuse, LegPlanner& planner,
+                     std::vector<std::vector<std::optional<LegOutcome>>>& out) {
+        out.assign(levels.size(), {});
+        for (std::size_t l = 0; l < levels.size(); ++l) {
+          const std::span<const LegRequest> level(levels[l]);
+          out[l].resize(level.size());
+          for (std::size_t c = 0; c < level.size(); ++c) {
+            out[l][c] = reuse.resolve(level[c].key, level[c].from, level[c].to, 0, true, planner,
+                                      level.subspan(c + 1));
+            if (out[l][c]->found) break;
+          }
+        }
+      };
+      one.begin_iteration(500 + static_cast<std::uint64_t>(iteration));
+      many.begin_iteration(500 + static_cast<std::uint64_t>(iteration));
+      std::vector<std::vector<std::optional<LegOutcome>>> expected;
+      run(one, p1, expected);
+      std::vector<std::vector<std::vector<std::optional<LegOutcome>>>> got(kThreads);
+      {
+        std::vector<std::jthread> threads;
+        for (int t = 0; t < kThreads; ++t)
+          threads.emplace_back([&, t] { run(many, *pn[t], got[t]); });
+      }
+      const std::string where = file + " iteration " + std::to_string(iteration);
+      for (int t = 0; t < kThreads; ++t) {
+        ASSERT_EQ(got[t].size(), expected.size()) << where;
+        for (std::size_t l = 0; l < expected.size(); ++l) {
+          for (std::size_t c = 0; c < expected[l].size(); ++c) {
+            ASSERT_EQ(got[t][l][c].has_value(), expected[l][c].has_value()) << where;
+            if (!expected[l][c]) continue;
+            const LegOutcome& x = *expected[l][c];
+            const LegOutcome& y = *got[t][l][c];
+            EXPECT_EQ(x.found, y.found) << where << " level " << l << " candidate " << c;
+            EXPECT_EQ(x.source, y.source) << where;
+            EXPECT_EQ(x.path.segments, y.path.segments) << where;
+            EXPECT_EQ(x.stats.iterations, y.stats.iterations) << where;
+            if (t == 0) {
+              ++requests;
+              failed += x.found ? 0 : 1;
+            }
+          }
+        }
+      }
+      const ReuseCounters a = one.end_iteration();
+      const ReuseCounters b = many.end_iteration();
+      EXPECT_EQ(b.leg_requests, kThreads * a.leg_requests) << where;
+      EXPECT_EQ(a.legs_database, b.legs_database) << where;
+      EXPECT_EQ(a.legs_repaired, b.legs_repaired) << where;
+      EXPECT_EQ(a.legs_planned, b.legs_planned) << where;
+      EXPECT_EQ(a.legs_failed, b.legs_failed) << where;
+      EXPECT_EQ(a.legs_rejected, b.legs_rejected) << where;
+      EXPECT_EQ(a.trees_reused, b.trees_reused) << where;
+      EXPECT_EQ(a.failures_reused, b.failures_reused) << where;
+      EXPECT_EQ(a.rrt_iterations, b.rrt_iterations) << where;
+    }
+    EXPECT_EQ(one.speculation().planned, 0u) << "one thread never waits";
+    speculated += many.speculation().planned;
+    used += many.speculation().used;
+  }
+  std::printf("%llu requests (%llu failed); %llu legs speculated, %llu of them then asked for\n",
+              static_cast<unsigned long long>(requests), static_cast<unsigned long long>(failed),
+              static_cast<unsigned long long>(speculated), static_cast<unsigned long long>(used));
+  EXPECT_GT(requests, 1000u);
+  EXPECT_GT(failed, 50u);
+  // Not vacuous: legs were speculated, some never asked for (no trace to
+  // leave otherwise) and some then asked for.
+  EXPECT_GT(speculated, used) << "every speculated leg was asked for: no-trace not exercised";
+  EXPECT_GT(used, 0u);
 }
 
 }  // namespace
