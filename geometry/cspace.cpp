@@ -518,6 +518,19 @@ CSpace::NearestObstacles CSpace::nearest_obstacles(const Pose2& pose) const {
 
 Clearance CSpace::clearance(const Pose2& pose) const { return nearest_obstacles(pose).clearance; }
 
+double CSpace::object_reach(int index) const {
+  double r2 = 0.0;
+  for (const Vec2& v : objects_[index].footprint) r2 = std::max(r2, dot(v, v));
+  return std::sqrt(r2);
+}
+
+double CSpace::swept_reach() const {
+  double r2 = 0.0;
+  for (const Slice& s : slice_data_)
+    for (const Vec2& v : s.swept) r2 = std::max(r2, dot(v, v));
+  return std::sqrt(r2);
+}
+
 Clearance CSpace::object_clearance(const Pose2& pose, int index) const {
   double best[2] = {std::numeric_limits<double>::infinity(),
                     std::numeric_limits<double>::infinity()};

@@ -79,6 +79,17 @@ class CSpace {
   //! whose nearest obstacle was not i (used by planning::LegMeasures).
   Clearance object_clearance(const Pose2& pose, int index) const;
 
+  //! Every point of object `index`'s footprint lies within this distance of
+  //! its position, whatever its pose (metres).
+  double object_reach(int index) const;
+  //! Every slice's swept cover S_k lies within this distance of the chair's
+  //! reference point (metres; the half diagonal plus the covers' bulge).
+  //! With object_reach(): a motion whose reference point stays within d of
+  //! a point q is never reported blocked by an object whose position is
+  //! farther than d + swept_reach() + object_reach() + 1 mm (offsets round
+  //! outward by far less) from q, wherever that object is.
+  double swept_reach() const;
+
   //! Total convex C-obstacle pieces over all slices (for reports).
   std::size_t piece_count() const;
 
@@ -100,7 +111,7 @@ class CSpace {
     std::vector<Polygon> local_pieces;  //!< convex pieces of footprint, local frame
     std::vector<ConvexPiece> pieces;    //!< rotated by pose.theta
     std::vector<Vec2> world_boundary;   //!< world footprint for clearance
-    Box world_box;                      //!< bounding box of world_boundary
+    Box world_box{};                    //!< bounding box of world_boundary
   };
   //! A C-obstacle piece in one slice: half-planes at the origin (base) and in
   //! the world, plus its bounding box.

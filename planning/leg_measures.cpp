@@ -1,6 +1,7 @@
 #include "planning/leg_measures.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "planning/motion_validator.h"
 
@@ -13,6 +14,11 @@ bool same_path(const rs::Path& a, const rs::Path& b) {
 }
 
 }  // namespace
+
+LegMeasures::LegMeasures(const geometry::CSpace& cspace, double radius)
+    : cspace_(&cspace), radius_(radius), swept_reach_(cspace.swept_reach()) {
+  for (int i = 0; i < cspace.object_count(); ++i) object_reach_.push_back(cspace.object_reach(i));
+}
 
 std::vector<Pose2> LegMeasures::layout() const {
   std::vector<Pose2> poses;
@@ -88,30 +94,67 @@ void LegMeasures::measure(Leg& leg, double step) {
   metrics_[leg.key] = std::move(entry);
 }
 
+bool LegMeasures::moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const {
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    if (now[i] == e.layout[i]) continue;
+    // A piece is at most e.piece long: its reference point stays within
+    // e.piece of its start.
+    const double reach = e.piece + swept_reach_ + object_reach_[i] + 1e-3;
+    const double reach2 = reach * reach;
+    for (const Pose2& pose : {e.layout[i], now[i]}) {
+      for (const geometry::Vec2& s : e.starts) {
+        const double dx = s.x - pose.x, dy = s.y - pose.y;
+        if (dx * dx + dy * dy <= reach2) return false;
+      }
+    }
+  }
+  return true;
+}
+
 double LegMeasures::certified_prefix(const Leg& leg, double piece) {
   std::vector<Pose2> now = layout();
+  std::shared_ptr<const CertifiedEntry> old;
   {
     std::lock_guard lock(mutex_);
     auto it = certified_.find(leg.key);
     if (it != certified_.end()) {
       const CertifiedEntry& e = *it->second;
-      if (e.piece == piece && e.from == leg.from && same_path(e.path, leg.path) &&
-          e.layout == now) {
-        ++counters_.certified_same;
-        return e.prefix;
+      if (e.piece == piece && e.from == leg.from && same_path(e.path, leg.path)) {
+        if (e.layout == now) {
+          ++counters_.certified_same;
+          return e.prefix;
+        }
+        old = it->second;
       }
     }
   }
-  MotionValidator validator(*cspace_, radius_);
   auto entry = std::make_shared<CertifiedEntry>();
   entry->from = leg.from;
   entry->path = leg.path;
   entry->piece = piece;
+  const bool kept = old && moves_out_of_reach(*old, now);
+  if (kept) {
+    entry->prefix = old->prefix;
+    entry->starts = old->starts;
+  } else {
+    MotionValidator validator(*cspace_, radius_);
+    entry->prefix = validator.certified_prefix(leg.from, leg.path, piece);
+    // The pieces certified_prefix() checks: each segment cut into equal
+    // pieces of at most `piece` metres.
+    Pose2 p = leg.from;
+    for (const rs::Segment& seg : leg.path.segments) {
+      const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / piece - 1e-9)));
+      const rs::Segment part{seg.steer, seg.gear, seg.length / pieces};
+      for (int k = 0; k < pieces; ++k) {
+        entry->starts.push_back(p.position());
+        p = rs::advance(p, part, radius_);
+      }
+    }
+  }
   entry->layout = std::move(now);
-  entry->prefix = validator.certified_prefix(leg.from, leg.path, piece);
   const double prefix = entry->prefix;
   std::lock_guard lock(mutex_);
-  ++counters_.certified_fresh;
+  ++(kept ? counters_.certified_kept : counters_.certified_fresh);
   certified_[leg.key] = std::move(entry);
   return prefix;
 }

@@ -8,8 +8,12 @@
 // iteration to the next, where one object moved.
 //
 // Both answers are exact: equal to the last bit to measuring afresh.
-// - A certified prefix is reused only when the leg (start pose and path) and
-//   every object pose are bit-identical to when it was computed.
+// - A certified prefix is reused when the leg (start pose and path) is
+//   bit-identical to when it was computed and every object that moved since
+//   was, before and after its move, out of reach of every checked piece:
+//   farther from each piece's start than the piece length plus
+//   CSpace::swept_reach() plus CSpace::object_reach() plus 1 mm. No collision
+//   query of the certification can then change its answer (cspace.h).
 // - Clearance at a waypoint is the minimum over walls and objects of
 //   per-obstacle distances (CSpace::nearest_obstacles). When the leg is
 //   unchanged and some objects moved, a side whose nearest obstacle did not
@@ -38,7 +42,7 @@ namespace hrs::planning {
 class LegMeasures {
  public:
   //! Reads `cspace` at each call (its layout may change between calls).
-  LegMeasures(const geometry::CSpace& cspace, double radius) : cspace_(&cspace), radius_(radius) {}
+  LegMeasures(const geometry::CSpace& cspace, double radius);
 
   //! Fills leg.waypoints (every `step` metres) and leg.metrics, equal to
   //! waypoints_of() and measure() in the current layout.
@@ -53,6 +57,7 @@ class LegMeasures {
     std::uint64_t metrics_updated = 0;  //!< objects moved: stored clearances updated
     std::uint64_t metrics_fresh = 0;    //!< no usable entry: measured afresh
     std::uint64_t certified_same = 0;   //!< nothing moved: stored prefix
+    std::uint64_t certified_kept = 0;   //!< objects moved, all out of reach: stored prefix
     std::uint64_t certified_fresh = 0;  //!< certified afresh
   };
   Counters counters() const;
@@ -73,12 +78,18 @@ class LegMeasures {
     double piece = 0.0;
     std::vector<Pose2> layout;
     double prefix = 0.0;
+    std::vector<geometry::Vec2> starts;  //!< start position of every piece checked
   };
+  //! True when no object that moved between `then` and `now` came within
+  //! reach of a piece of `e` (in either pose).
+  bool moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const;
   std::vector<Pose2> layout() const;
 
   const geometry::CSpace* cspace_;
   double radius_;
-  mutable std::mutex mutex_;  //!< guards the maps and counters_
+  double swept_reach_;                //!< CSpace::swept_reach()
+  std::vector<double> object_reach_;  //!< CSpace::object_reach() per object
+  mutable std::mutex mutex_;          //!< guards the maps and counters_
   std::map<LegKey, std::shared_ptr<const MetricsEntry>> metrics_;
   std::map<LegKey, std::shared_ptr<const CertifiedEntry>> certified_;
   Counters counters_;

@@ -225,7 +225,9 @@ TEST(CSpace, NearestObstaclesMatchBruteForceAndObjectClearances) {
             const double v = side == 0 ? oc.left : oc.right;
             ASSERT_GE(v, ours[side]) << file << " object " << o;
             lowest = std::min(lowest, v);
-            if (o == owners[side]) ASSERT_EQ(v, ours[side]) << file;
+            if (o == owners[side]) {
+              ASSERT_EQ(v, ours[side]) << file;
+            }
           }
           if (owners[side] == CSpace::kWalls) {
             ++wall_owned;

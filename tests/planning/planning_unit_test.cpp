@@ -248,7 +248,8 @@ TEST(MotionValidator, CertifiedPrefixCertifiesMoreButNothingBlocked) {
 
 // LegMeasures (technique `metrics`) answers bit for bit what measuring afresh
 // answers, across random object moves, moves undone, and legs whose path
-// changed; every way of answering (stored, updated, afresh) occurs.
+// changed; every way of answering (stored, updated, afresh; a certification
+// kept after moves out of reach) occurs.
 TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
   LegMeasures::Counters total;
   long cases = 0;
@@ -272,10 +273,18 @@ TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
     std::vector<std::pair<int, Pose2>> undo;
     for (int step = 0; step < 150; ++step) {
       const double action = testing::unit01(rng);
-      if (action < 0.5) {  // move an object anywhere in the room
+      if (action < 0.3) {  // move an object anywhere in the room
         const int k = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
         undo.emplace_back(k, cspace.object_pose(k));
         cspace.move_object(k, testing::random_pose(scene, rng));
+      } else if (action < 0.5) {  // nudge an object, as the annealer does
+        const int k = static_cast<int>(rng() % static_cast<std::uint64_t>(n));
+        Pose2 p = cspace.object_pose(k);
+        undo.emplace_back(k, p);
+        p.x += 0.3 * (2 * testing::unit01(rng) - 1);
+        p.y += 0.3 * (2 * testing::unit01(rng) - 1);
+        p.theta = geometry::wrap_angle(p.theta + 0.3 * (2 * testing::unit01(rng) - 1));
+        cspace.move_object(k, p);
       } else if (action < 0.7 && !undo.empty()) {  // a rejected move: back to the old pose
         cspace.move_object(undo.back().first, undo.back().second);
         undo.pop_back();
@@ -304,19 +313,23 @@ TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
     total.metrics_updated += c.metrics_updated;
     total.metrics_fresh += c.metrics_fresh;
     total.certified_same += c.certified_same;
+    total.certified_kept += c.certified_kept;
     total.certified_fresh += c.certified_fresh;
   }
   EXPECT_GT(total.metrics_same, 100u);
   EXPECT_GT(total.metrics_updated, 1000u);
   EXPECT_GT(total.metrics_fresh, 100u);
   EXPECT_GT(total.certified_same, 100u);
+  EXPECT_GT(total.certified_kept, 300u);
+  EXPECT_GT(total.certified_fresh, 300u);
   std::printf(
       "%ld legs measured: metrics stored %lu, updated %lu, afresh %lu; certified stored "
-      "%lu, afresh %lu\n",
+      "%lu, kept after moves out of reach %lu, afresh %lu\n",
       cases, static_cast<unsigned long>(total.metrics_same),
       static_cast<unsigned long>(total.metrics_updated),
       static_cast<unsigned long>(total.metrics_fresh),
       static_cast<unsigned long>(total.certified_same),
+      static_cast<unsigned long>(total.certified_kept),
       static_cast<unsigned long>(total.certified_fresh));
 }
 
