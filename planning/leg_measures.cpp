@@ -66,6 +66,12 @@ void LegMeasures::measure(Leg& leg, double step) {
         continue;
       }
       for (int k : moved) {
+        // Object k's boundary lies within object_reach of its position, so
+        // it is at least |p - position| - reach away: farther than both
+        // sides' values (1 nm over the rounding), it cannot lower either.
+        const double far = std::max(n.clearance.left, n.clearance.right) + object_reach_[k] + 1e-9;
+        const double dx = p.x - now[k].x, dy = p.y - now[k].y;
+        if (dx * dx + dy * dy > far * far) continue;
         const geometry::Clearance d = cspace_->object_clearance(p, k);
         if (d.left < n.clearance.left) {
           n.clearance.left = d.left;

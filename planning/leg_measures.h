@@ -18,8 +18,10 @@
 //   per-obstacle distances (CSpace::nearest_obstacles). When the leg is
 //   unchanged and some objects moved, a side whose nearest obstacle did not
 //   move keeps its value lowered by the moved objects' new distances
-//   (CSpace::object_clearance); a side whose nearest obstacle moved is
-//   measured afresh. The metrics are then summed in measure()'s order.
+//   (CSpace::object_clearance; skipped for an object whose position is
+//   farther than both sides' values plus its CSpace::object_reach()); a side
+//   whose nearest obstacle moved is measured afresh. The metrics are then
+//   summed in measure()'s order.
 //
 // Thread-safe: tours of one iteration call in parallel. Entries are
 // immutable once stored and replaced whole; since every answer equals the
