@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "planning/motion_validator.h"
+#include "planning/path_ops.h"
 
 namespace hrs::planning {
 
@@ -145,12 +146,10 @@ double LegMeasures::certified_prefix(const Leg& leg, double piece) {
   } else {
     MotionValidator validator(*cspace_, radius_);
     entry->prefix = validator.certified_prefix(leg.from, leg.path, piece);
-    // The pieces certified_prefix() checks: each segment cut into equal
-    // pieces of at most `piece` metres.
+    // The pieces certified_prefix() checks (cut_segment).
     Pose2 p = leg.from;
     for (const rs::Segment& seg : leg.path.segments) {
-      const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / piece - 1e-9)));
-      const rs::Segment part{seg.steer, seg.gear, seg.length / pieces};
+      const auto [pieces, part] = cut_segment(seg, piece);
       for (int k = 0; k < pieces; ++k) {
         entry->starts.push_back(p.position());
         p = rs::advance(p, part, radius_);

@@ -51,13 +51,11 @@ double MotionValidator::certified_prefix(const Pose2& start, const rs::Path& pat
   double done = 0.0;
   Pose2 p = start;
   for (const rs::Segment& seg : path.segments) {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / piece - 1e-9)));
-    const double len = seg.length / pieces;
+    const auto [pieces, part] = cut_segment(seg, piece);
     for (int i = 0; i < pieces; ++i) {
-      const rs::Segment part{seg.steer, seg.gear, len};
       if (!certified(p, part, refine_depth)) return done;
       p = rs::advance(p, part, radius_);
-      done += len;
+      done += part.length;
     }
   }
   return done;

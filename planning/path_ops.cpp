@@ -1,6 +1,7 @@
 #include "planning/path_ops.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace hrs::planning {
 
@@ -11,6 +12,11 @@ void append_segment(std::vector<rs::Segment>& out, const rs::Segment& segment) {
     return;
   }
   out.push_back(segment);
+}
+
+SegmentPieces cut_segment(const rs::Segment& segment, double max_piece) {
+  const int count = std::max(1, static_cast<int>(std::ceil(segment.length / max_piece - 1e-9)));
+  return {count, rs::Segment{segment.steer, segment.gear, segment.length / count}};
 }
 
 rs::Path subpath(const rs::Path& path, double s0, double s1) {

@@ -18,6 +18,14 @@ inline constexpr double kMinSegmentLength = 1e-12;
 void append_segment(std::vector<rs::Segment>& out, const rs::Segment& segment);
 //! The part of `path` between arc lengths `s0` and `s1` (clamped, s0 <= s1).
 rs::Path subpath(const rs::Path& path, double s0, double s1);
+//! A segment cut into `count` equal pieces of at most `max_piece` metres
+//! (at least one): the one cut the continuous checks, the re-certification
+//! and the path operations share.
+struct SegmentPieces {
+  int count;
+  rs::Segment part;  //!< one piece: the segment's steer and gear, length / count
+};
+SegmentPieces cut_segment(const rs::Segment& segment, double max_piece);
 //! Pose at the end of `path` driven from `start`.
 geometry::Pose2 final_pose(const geometry::Pose2& start, const rs::Path& path);
 

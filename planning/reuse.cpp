@@ -185,8 +185,7 @@ rs::Path shorten_path(const Pose2& start, const rs::Path& path, MotionValidator&
   Pose2 p = start;
   double s = 0.0;
   for (const rs::Segment& seg : path.segments) {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / step - 1e-9)));
-    const rs::Segment part{seg.steer, seg.gear, seg.length / pieces};
+    const auto [pieces, part] = cut_segment(seg, step);
     for (int i = 0; i < pieces; ++i) {
       p = rs::advance(p, part, path.radius);
       s += part.length;
@@ -452,8 +451,7 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   double cost = 0.0;
   bool blocked = false;
   for (const rs::Segment& seg : base.segments) {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(seg.length / step - 1e-9)));
-    const rs::Segment part{seg.steer, seg.gear, seg.length / pieces};
+    const auto [pieces, part] = cut_segment(seg, step);
     for (int i = 0; i < pieces && !blocked; ++i) {
       if (!validator.segment_free(p, part)) {
         blocked = true;
@@ -584,6 +582,21 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   return out;
 }
 
+ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request) {
+  std::lock_guard lock(mutex_);
+  auto& owned = slots_[r.key];
+  if (!owned) {
+    owned = std::make_unique<Slot>();
+    owned->from = r.from;
+    owned->to = r.to;
+  }
+  if (request) {
+    ++leg_requests_;
+    owned->requested = true;
+  }
+  return owned.get();
+}
+
 LegOutcome ReusePlanner::settle(const LegKey& key, Slot& slot, bool may_plan,
                                 LegPlanner& planner) const {
   slot.working = true;
@@ -611,17 +624,7 @@ LegOutcome ReusePlanner::settle(const LegKey& key, Slot& slot, bool may_plan,
 
 bool ReusePlanner::speculate_one(std::span<const LegRequest> next, LegPlanner& planner) {
   for (const LegRequest& r : next) {
-    Slot* slot = nullptr;
-    {
-      std::lock_guard lock(mutex_);
-      auto& owned = slots_[r.key];
-      if (!owned) {
-        owned = std::make_unique<Slot>();
-        owned->from = r.from;
-        owned->to = r.to;
-      }
-      slot = owned.get();
-    }
+    Slot* slot = slot_for(r, false);
     std::unique_lock lock(slot->mutex, std::try_to_lock);
     if (!lock.owns_lock()) continue;  // being computed
     if (slot->planned_done || (slot->database_done && slot->database.found)) continue;
@@ -701,19 +704,7 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     }
     return out;
   }
-  Slot* slot = nullptr;
-  {
-    std::lock_guard lock(mutex_);
-    ++leg_requests_;
-    auto& owned = slots_[key];
-    if (!owned) {
-      owned = std::make_unique<Slot>();
-      owned->from = from;
-      owned->to = to;
-    }
-    slot = owned.get();
-    slot->requested = true;
-  }
+  Slot* slot = slot_for({key, from, to}, true);
   if (options_.paths) {
     // Compute once per key and iteration; tours needing the same leg wait,
     // or with `speculate` first plan their next candidate.

@@ -328,6 +328,9 @@ class ReusePlanner final : public LegProvider {
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                       LegPlanner& planner, Slot& slot) const;
+  //! The iteration's slot of `r.key`, made on first use; `request`: a tour
+  //! asks for it (counted, and kept by end_iteration()).
+  Slot* slot_for(const LegRequest& r, bool request);
   //! Stage A, then (when `may_plan`) stage B, each once per slot; the caller
   //! holds slot.mutex. The outcome a tour gets.
   LegOutcome settle(const LegKey& key, Slot& slot, bool may_plan, LegPlanner& planner) const;

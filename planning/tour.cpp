@@ -133,22 +133,20 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
     order.resize(static_cast<std::size_t>(std::max(0, options_.max_candidates)));
   }
 
-  // The same candidates as leg requests: a provider may start on the later
-  // ones while it waits for an earlier one (LegProvider::resolve).
+  // The candidates as leg requests: a provider may start on the later ones
+  // while it waits for an earlier one (LegProvider::resolve).
   std::vector<LegRequest> requests;
-  if (hooks_.provider) {
-    requests.reserve(order.size());
-    for (const auto& [rs_length, j] : order)
-      requests.push_back({{here.object, next.object, here.goals[pose].slot, next.goals[j].slot},
-                          from,
-                          next.goals[j].pose});
-  }
+  requests.reserve(order.size());
+  for (const auto& [rs_length, j] : order)
+    requests.push_back({{here.object, next.object, here.goals[pose].slot, next.goals[j].slot},
+                        from,
+                        next.goals[j].pose});
 
   for (std::size_t c = 0; c < order.size(); ++c) {
     const int j = order[c].second;
     if (next.dead[j]) continue;  // reached before: its continuation failed
-    const Pose2 to = next.goals[j].pose;
-    LegKey key{here.object, next.object, here.goals[pose].slot, next.goals[j].slot};
+    const Pose2 to = requests[c].to;
+    const LegKey key = requests[c].key;
     std::optional<rs::Path> path;
     LegSource source = LegSource::kPlanned;
     LegStats stats;
