@@ -338,6 +338,9 @@ struct ReusePlanner::Slot {
   Pose2 from, to;
   //! A tour asked for this leg (else only `speculate` computed it: no trace).
   bool requested = false;
+  //! A tour asked for it with planning allowed: only then does stage B's
+  //! outcome count (else stage B ran for `speculate` alone).
+  bool plan_requested = false;
   bool speculative = false;  //!< computed by speculate_one()
   //! Its holder is validating or planning (not merely reading a result).
   std::atomic<bool> working{false};
@@ -582,7 +585,7 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   return out;
 }
 
-ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request) {
+ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request, bool may_plan) {
   std::lock_guard lock(mutex_);
   auto& owned = slots_[r.key];
   if (!owned) {
@@ -593,6 +596,7 @@ ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request) {
   if (request) {
     ++leg_requests_;
     owned->requested = true;
+    owned->plan_requested = owned->plan_requested || may_plan;
   }
   return owned.get();
 }
@@ -704,7 +708,7 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     }
     return out;
   }
-  Slot* slot = slot_for({key, from, to}, true);
+  Slot* slot = slot_for({key, from, to}, true, may_plan);
   if (options_.paths) {
     // Compute once per key and iteration; tours needing the same leg wait,
     // or with `speculate` first plan their next candidate.
@@ -749,13 +753,18 @@ ReuseCounters ReusePlanner::end_iteration() {
   std::set<RootKey> roots;
   for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
     if (!slot->requested) continue;   // computed by `speculate` only: no trace
+    // Stage B counts only when a tour asked for the leg with planning
+    // allowed: a tour capped by max_leg_plans gets "not found" whether or
+    // not `speculate` planned the leg meanwhile, so the stores must not
+    // depend on it either.
+    const bool planned = slot->planned_done && slot->plan_requested;
     if (slot->database.rejected) ++c.legs_rejected;
     const LegOutcome* outcome = nullptr;
     if (slot->database_done && slot->database.found) {
       outcome = &slot->database;
       ++c.legs_database;
       c.database_ms += outcome->stats.time_ms;
-    } else if (slot->planned_done) {
+    } else if (planned) {
       outcome = &slot->planned;
       if (outcome->found && outcome->source == LegSource::kRepaired) {
         ++c.legs_repaired;
@@ -769,11 +778,13 @@ ReuseCounters ReusePlanner::end_iteration() {
         c.failed_ms += outcome->stats.time_ms;
       }
     }
-    if (slot->tree_reused) ++c.trees_reused;
-    if (slot->failure_reused) ++c.failures_reused;
-    if (slot->proven && slot->planned_done && !slot->planned.found) ++c.legs_proven;
-    c.proof_ms += slot->proof_ms;
-    if (options_.failures && slot->planned_done) {
+    if (planned) {
+      if (slot->tree_reused) ++c.trees_reused;
+      if (slot->failure_reused) ++c.failures_reused;
+      if (slot->proven && !slot->planned.found) ++c.legs_proven;
+      c.proof_ms += slot->proof_ms;
+    }
+    if (options_.failures && planned) {
       if (!slot->failed_points.empty()) {
         Failure f{slot->from, slot->to, {}, std::move(slot->failed_points)};
         for (int i = 0; i < cspace_->object_count(); ++i)
@@ -783,7 +794,7 @@ ReuseCounters ReusePlanner::end_iteration() {
         failures_.erase(key);
       }
     }
-    if (options_.backoff && slot->planned_done && outcome == &slot->planned) {
+    if (options_.backoff && outcome == &slot->planned) {
       if (outcome->found)
         failed_in_a_row_.erase(key);
       else
@@ -796,7 +807,7 @@ ReuseCounters ReusePlanner::end_iteration() {
         database_.erase(key);  // not valid here and not repairable
       }
     }
-    if (slot->grown) {
+    if (planned && slot->grown) {
       const RootKey root{key.from_object, key.from_slot};
       if (roots.insert(root).second) trees_.put(root, *std::move(slot->grown));
     }

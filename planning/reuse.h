@@ -329,8 +329,9 @@ class ReusePlanner final : public LegProvider {
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                       LegPlanner& planner, Slot& slot) const;
   //! The iteration's slot of `r.key`, made on first use; `request`: a tour
-  //! asks for it (counted, and kept by end_iteration()).
-  Slot* slot_for(const LegRequest& r, bool request);
+  //! asks for it (counted, and kept by end_iteration()), `may_plan`: with
+  //! planning allowed (then stage B's outcome counts too).
+  Slot* slot_for(const LegRequest& r, bool request, bool may_plan = false);
   //! Stage A, then (when `may_plan`) stage B, each once per slot; the caller
   //! holds slot.mutex. The outcome a tour gets.
   LegOutcome settle(const LegKey& key, Slot& slot, bool may_plan, LegPlanner& planner) const;
