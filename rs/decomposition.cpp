@@ -32,11 +32,15 @@ Decomposition::Decomposition(Decomposition&&) noexcept = default;
 Decomposition& Decomposition::operator=(Decomposition&&) noexcept = default;
 
 Decomposition::Decomposition(const DecompositionOptions& options, std::mt19937_64& rng)
-    : options_(options), tree_(weight(options)) {
+    : options_(options),
+      grid_index_(weight(options), -options.room_width, options.room_width, -options.room_depth,
+                  options.room_depth),
+      tree_(weight(options)) {
   static_assert(kWordCount < Grid::kUnknown, "a word id must fit a grid cell");
   const Pose2 origin{};
   auto add = [&](const Pose2& p, int word) {
     samples_.push_back({p, word});
+    grid_index_.insert(p);
     tree_.insert(p);
   };
   for (int i = 0; i < options_.initial_samples; ++i) {
@@ -48,7 +52,7 @@ Decomposition::Decomposition(const DecompositionOptions& options, std::mt19937_6
     const Pose2 p = uniform(rng);
     ++drawn_;
     const int word = shortest_word(origin, p, options_.radius).word;
-    const auto nn = tree_.nearest(p);
+    const auto nn = grid_index_.nearest(p);  // p is in the box
     if (nn >= 0 && samples_[nn].word == word) {
       ++agreeing;
     } else {
@@ -58,15 +62,18 @@ Decomposition::Decomposition(const DecompositionOptions& options, std::mt19937_6
   }
   if (options_.grid_cell > 0.0 && options_.grid_angle > 0.0) {
     auto g = std::make_unique<Grid>();
-    g->nx = std::max(1, static_cast<int>(std::ceil(2.0 * options_.room_width / options_.grid_cell)));
-    g->ny = std::max(1, static_cast<int>(std::ceil(2.0 * options_.room_depth / options_.grid_cell)));
+    g->nx =
+        std::max(1, static_cast<int>(std::ceil(2.0 * options_.room_width / options_.grid_cell)));
+    g->ny =
+        std::max(1, static_cast<int>(std::ceil(2.0 * options_.room_depth / options_.grid_cell)));
     g->nt = std::max(1, static_cast<int>(std::ceil(2.0 * std::numbers::pi / options_.grid_angle)));
     g->cx = 2.0 * options_.room_width / g->nx;
     g->cy = 2.0 * options_.room_depth / g->ny;
     g->ct = 2.0 * std::numbers::pi / g->nt;
     const std::size_t n = static_cast<std::size_t>(g->nx) * g->ny * g->nt;
     g->words = std::make_unique<std::atomic<std::uint8_t>[]>(n);
-    for (std::size_t i = 0; i < n; ++i) g->words[i].store(Grid::kUnknown, std::memory_order_relaxed);
+    for (std::size_t i = 0; i < n; ++i)
+      g->words[i].store(Grid::kUnknown, std::memory_order_relaxed);
     grid_ = std::move(g);
   }
 }
@@ -86,12 +93,17 @@ Pose2 Decomposition::relative(const Pose2& from, const Pose2& to) const {
   return {c * dx + s * dy, -s * dx + c * dy, geometry::wrap_angle(to.theta - from.theta)};
 }
 
+std::int32_t Decomposition::nearest_sample(const Pose2& q) const {
+  const bool inside = std::abs(q.x) <= options_.room_width && std::abs(q.y) <= options_.room_depth;
+  return inside ? grid_index_.nearest(q) : tree_.nearest(q);
+}
+
 int Decomposition::nearest_word(const Pose2& from, const Pose2& to) const {
   return nearest_sample_word(relative(from, to));
 }
 
 int Decomposition::nearest_sample_word(const Pose2& q) const {
-  return samples_[tree_.nearest(q)].word;
+  return samples_[nearest_sample(q)].word;
 }
 
 int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {

@@ -4,15 +4,16 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <random>
 #include <thread>
-#include <algorithm>
-#include <cmath>
 
 #include "rs/decomposition.h"
 #include "rs/kd_tree.h"
+#include "rs/pose_grid.h"
 #include "tests/rs/fixtures.h"
 
 namespace hrs::rs {
@@ -43,6 +44,45 @@ TEST(RsKdTree, NearestMatchesBruteForceWithHeadingWrapAround) {
       EXPECT_DOUBLE_EQ(tree.distance2(pts[nn], q), best);
     }
   }
+}
+
+// The grid the decomposition searches answers like brute force (lowest index
+// among equally near points) and like the kd-tree, while it re-buckets as
+// points arrive: queries between insertions, inside and outside the box,
+// headings crowded at the ±π seam, and grids flat in one axis.
+TEST(RsPoseGrid, NearestMatchesBruteForceAndTheKdTreeWhileGrowing) {
+  std::mt19937_64 rng(37);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int queries = 0;
+  for (const auto& [w, half_x, half_y] :
+       std::vector<std::array<double, 3>>{{0.7, 6.0, 5.0}, {0.1, 3.0, 3.0}, {5.0, 2.0, 0.05}}) {
+    PoseGrid grid(w, -half_x, half_x, -half_y, half_y);
+    PoseKdTree tree(w);
+    std::vector<Pose2> pts;
+    EXPECT_EQ(grid.nearest({0, 0, 0}), -1);
+    for (int i = 0; i < 6000; ++i) {
+      Pose2 p{half_x * u(rng), half_y * u(rng), std::numbers::pi * u(rng)};
+      if (i % 10 == 0) p.theta = std::numbers::pi - 1e-3 * (i % 7);  // crowd the seam
+      pts.push_back(p);
+      grid.insert(p);
+      tree.insert(p);
+      if (i % 3 != 0) continue;
+      // A query inside the box, or up to half its size outside it.
+      Pose2 q{1.5 * half_x * u(rng), 1.5 * half_y * u(rng), std::numbers::pi * u(rng)};
+      if (i % 5 == 0) q.theta = -std::numbers::pi + 1e-4 * (i % 3);
+      std::int32_t brute = -1;
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < pts.size(); ++k) {
+        const double d = grid.distance2(pts[k], q);
+        if (d < best) best = d, brute = static_cast<std::int32_t>(k);
+      }
+      const std::int32_t got = grid.nearest(q);
+      ASSERT_EQ(got, brute) << "w " << w << " points " << pts.size();
+      EXPECT_EQ(tree.distance2(pts[tree.nearest(q)], q), best);
+      ++queries;
+    }
+  }
+  EXPECT_EQ(queries, 6000);
 }
 
 DecompositionOptions small_options() {
