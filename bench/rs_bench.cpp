@@ -19,6 +19,8 @@
 #include <ompl/base/spaces/ReedsSheppStateSpace.h>
 
 #include "rs/decomposition.h"
+#include "rs/kd_tree.h"
+#include "rs/pose_grid.h"
 #include "rs/reeds_shepp.h"
 
 namespace {
@@ -148,6 +150,49 @@ void BM_RsSample(benchmark::State& state) {
   state.SetLabel("step 0.05 m, paths ~7 m");
 }
 BENCHMARK(BM_RsSample);
+
+//! The decomposition build's nearest-sample search: the bucket grid against
+//! the kd-tree on the same 45 000 samples and queries, uniform in a living
+//! room's doubled box (±6 m × ±5 m × ±π, heading weight 0.7 m/rad).
+template <class Index>
+void nearest_in_box(benchmark::State& state, Index& index) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> x(-6.0, 6.0), y(-5.0, 5.0),
+      t(-std::numbers::pi, std::numbers::pi);
+  for (int k = 0; k < 45'000; ++k) index.insert({x(rng), y(rng), t(rng)});
+  std::vector<Pose2> queries(4096);
+  for (auto& q : queries) q = {x(rng), y(rng), t(rng)};
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(index.nearest(queries[i++ & 4095]));
+  state.SetLabel("45000 samples");
+}
+void BM_PoseGridNearest(benchmark::State& state) {
+  hrs::rs::PoseGrid grid(kRadius, -6.0, 6.0, -5.0, 5.0);
+  nearest_in_box(state, grid);
+}
+BENCHMARK(BM_PoseGridNearest);
+void BM_PoseKdTreeNearest(benchmark::State& state) {
+  hrs::rs::PoseKdTree tree(kRadius);
+  nearest_in_box(state, tree);
+}
+BENCHMARK(BM_PoseKdTreeNearest);
+
+//! A whole decomposition build for the living room (6 m × 5 m, r = 0.7 m).
+void BM_RsDecompositionBuild(benchmark::State& state) {
+  hrs::rs::DecompositionOptions o;
+  o.radius = kRadius;
+  o.room_width = 6.0;
+  o.room_depth = 5.0;
+  std::size_t samples = 0;
+  for (auto _ : state) {
+    std::mt19937_64 rng(1);
+    hrs::rs::Decomposition d(o, rng);
+    samples = d.samples().size();
+    benchmark::DoNotOptimize(samples);
+  }
+  state.SetLabel(std::to_string(samples) + " samples");
+}
+BENCHMARK(BM_RsDecompositionBuild)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 
