@@ -104,14 +104,15 @@ class Decomposition {
   Pose2 uniform(std::mt19937_64& rng) const;
   struct Grid;
 
+  //! Index of the sample nearest to `q` (relative pose).
+  std::int32_t nearest_sample(const Pose2& q) const;
+
   DecompositionOptions options_;
   //! The samples twice: a bucket grid over the sampled box (queries inside
   //! it: every query of the build, most look-ups) and a kd-tree (queries
   //! outside it, where rings of cells would have to grow to the box).
   PoseGrid grid_index_;
   PoseKdTree tree_;
-  //! Index of the sample nearest to `q` (relative pose).
-  std::int32_t nearest_sample(const Pose2& q) const;
   std::vector<DecompositionSample> samples_;
   std::size_t drawn_ = 0;
   std::unique_ptr<Grid> grid_;  //!< null when off

@@ -6,6 +6,7 @@
 // one (the decomposition grows while it queries); random insertion order keeps
 // the tree balanced in expectation.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -15,6 +16,16 @@
 #include "geometry/pose.h"
 
 namespace hrs::rs {
+
+//! The metric of the decomposition's nearest-sample search, squared, between
+//! (x, y, θ) triples with θ in [-π, π]: dx² + dy² + (w · wrapped dθ)².
+//! PoseKdTree and PoseGrid both measure with it, so they agree.
+inline double pose_metric2(double w, const double* a, const double* b) {
+  const double d = std::abs(a[2] - b[2]);
+  const double dx = a[0] - b[0], dy = a[1] - b[1];
+  const double dt = w * std::min(d, 2.0 * std::numbers::pi - d);
+  return dx * dx + dy * dy + dt * dt;
+}
 
 class PoseKdTree {
  public:
@@ -66,14 +77,7 @@ class PoseKdTree {
     std::int32_t left, right;
   };
 
-  static double angle_gap(double a, double b) {
-    const double d = std::abs(a - b);
-    return std::min(d, 2.0 * std::numbers::pi - d);
-  }
-  double dist2(const double* a, const double* b) const {
-    const double dx = a[0] - b[0], dy = a[1] - b[1], dt = w_ * angle_gap(a[2], b[2]);
-    return dx * dx + dy * dy + dt * dt;
-  }
+  double dist2(const double* a, const double* b) const { return pose_metric2(w_, a, b); }
   //! Lower bound on the distance from q to the far side of a split at s on
   //! `axis`. For θ the far side lies within [s, π] (or [-π, s)), which the
   //! wrap-around may reach from the other end.

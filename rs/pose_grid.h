@@ -1,6 +1,6 @@
 #pragma once
 // A bucket grid over poses (x, y, θ) for the RS-decomposition's nearest-
-// neighbour look-ups (paper §V-A), with the metric of PoseKdTree:
+// neighbour look-ups (paper §V-A), with the metric of PoseKdTree (pose_metric2):
 //   sqrt(dx² + dy² + (w · dθ)²),  dθ wrapped to [-π, π].
 // The decomposition's samples are uniform in a box, so equal cells (about
 // two samples each, re-bucketed as the set grows) answer a query from the
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "geometry/pose.h"
+#include "rs/kd_tree.h"
 
 namespace hrs::rs {
 
@@ -100,21 +101,18 @@ class PoseGrid {
 
  private:
   double dist2(const std::array<double, 3>& a, const std::array<double, 3>& b) const {
-    const double d = std::abs(a[2] - b[2]);
-    const double dx = a[0] - b[0], dy = a[1] - b[1];
-    const double dt = w_ * std::min(d, 2.0 * std::numbers::pi - d);
-    return dx * dx + dy * dy + dt * dt;
+    return pose_metric2(w_, a.data(), b.data());
   }
   static int cell(double v, double origin, double size, int count) {
     const double f = std::floor((v - origin) / size);
     if (!(f >= 0.0)) return 0;  // below the box, or NaN
     return f >= count - 1 ? count - 1 : static_cast<int>(f);
   }
-  static int circular(int a, int b, int n) {
+  //! Steps between heading cells a and b around the circle.
+  int circular(int a, int b) const {
     const int d = std::abs(a - b);
-    return std::min(d, n - d);
+    return std::min(d, nt_ - d);
   }
-  int circular(int a, int b) const { return circular(a, b, nt_); }
   std::size_t index(int i, int j, int k) const {
     return (static_cast<std::size_t>(k) * ny_ + j) * nx_ + i;
   }
