@@ -168,6 +168,7 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
                   {"legs_planned", c.legs_planned},
                   {"legs_failed", c.legs_failed},
                   {"legs_rejected", c.legs_rejected},
+                  {"checks_skipped", c.checks_skipped},
                   {"trees_reused", c.trees_reused},
                   {"failures_reused", c.failures_reused},
                   {"legs_proven", c.legs_proven},

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <numbers>
 #include <set>
 #include <stdexcept>
 
@@ -238,9 +239,21 @@ std::optional<rs::Path> PathDatabase::transformed(const LegKey& key, const Pose2
   return e->path;  // segments are intrinsic: driven from `from` they end at `to`
 }
 
-void PathDatabase::put(const LegKey& key, const Pose2& from, const Pose2& to,
-                       const rs::Path& path) {
-  entries_[key] = Entry{path, from, to};
+void PathDatabase::put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path,
+                       std::vector<Pose2> checked) {
+  Entry e{path, from, to, std::move(checked), {}};
+  if (!e.checked.empty()) {
+    Pose2 p = from;
+    e.trace.push_back(p.position());
+    for (const rs::Segment& seg : path.segments) {
+      const auto [pieces, part] = cut_segment(seg, kTraceStep);
+      for (int i = 0; i < pieces; ++i) {
+        p = rs::advance(p, part, path.radius);
+        e.trace.push_back(p.position());
+      }
+    }
+  }
+  entries_[key] = std::move(e);
 }
 
 bool PathDatabase::lookup(const LegKey& key, const Pose2& from, const Pose2& to, rs::Path& out) {
@@ -319,6 +332,7 @@ ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
   legs_planned += o.legs_planned;
   legs_failed += o.legs_failed;
   legs_rejected += o.legs_rejected;
+  checks_skipped += o.checks_skipped;
   trees_reused += o.trees_reused;
   failures_reused += o.failures_reused;
   legs_proven += o.legs_proven;
@@ -345,6 +359,7 @@ struct ReusePlanner::Slot {
   //! Its holder is validating or planning (not merely reading a result).
   std::atomic<bool> working{false};
   bool database_done = false;  //!< stage A ran
+  bool check_skipped = false;  //!< stage A served the stored path by still_free()
   LegOutcome database;
   bool planned_done = false;  //!< stage B ran
   LegOutcome planned;
@@ -384,6 +399,15 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
   }
   if (options_.metrics) measures_ = std::make_unique<LegMeasures>(cspace, radius_);
+  // still_free(): a point of a stored path lies within half a trace step of
+  // the trace; straight motions are tested as the segment itself and each
+  // arc, cut at slice borders, as triangles within one slice's arc length
+  // (radius · 2π/K) of a point on the arc (cspace.h); an object's C-obstacle
+  // pieces A ⊕ (−S_k) lie within swept_reach() of its footprint A, and
+  // offsets round outward by far less than 1 mm.
+  still_free_margin_ = 0.5 * PathDatabase::kTraceStep +
+                       radius_ * 2.0 * std::numbers::pi / cspace.slices() + cspace.swept_reach() +
+                       1e-3;
 }
 
 ReusePlanner::~ReusePlanner() = default;
@@ -408,19 +432,61 @@ void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
   unshared_ = {};
 }
 
-LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from,
-                                       const Pose2& to) const {
+bool ReusePlanner::still_free(const PathDatabase::Entry& e) const {
+  if (e.checked.size() != static_cast<std::size_t>(cspace_->object_count())) return false;
+  const double m = still_free_margin_;
+  std::vector<geometry::Vec2> fp;
+  for (int i = 0; i < cspace_->object_count(); ++i) {
+    const Pose2& now = cspace_->object_pose(i);
+    if (now == e.checked[i]) continue;
+    // The footprint where the object stands now, and its box grown by m.
+    const double c = std::cos(now.theta), s = std::sin(now.theta);
+    fp.clear();
+    double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+    for (const geometry::Vec2& v : scene_.objects[i].footprint) {
+      fp.push_back({now.x + c * v.x - s * v.y, now.y + s * v.x + c * v.y});
+      xmin = std::min(xmin, fp.back().x), ymin = std::min(ymin, fp.back().y);
+      xmax = std::max(xmax, fp.back().x), ymax = std::max(ymax, fp.back().y);
+    }
+    for (const geometry::Vec2& p : e.trace) {
+      if (p.x < xmin - m || p.x > xmax + m || p.y < ymin - m || p.y > ymax + m) continue;
+      // Inside (even-odd crossings) or within m of an edge: possibly blocked.
+      bool inside = false;
+      double d2 = 1e300;
+      for (std::size_t k = 0, j = fp.size() - 1; k < fp.size(); j = k++) {
+        const geometry::Vec2 a = fp[j], b = fp[k];
+        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
+          inside = !inside;
+        const double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey;
+        double t = len2 > 0.0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0.0;
+        t = std::clamp(t, 0.0, 1.0);
+        const double dx = p.x - (a.x + t * ex), dy = p.y - (a.y + t * ey);
+        d2 = std::min(d2, dx * dx + dy * dy);
+      }
+      if (inside || d2 <= m * m) return false;
+    }
+  }
+  return true;
+}
+
+LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from, const Pose2& to,
+                                       bool& skipped) const {
   LegOutcome out;
   out.source = LegSource::kReused;
-  if (!database_.find(key)) return out;
+  skipped = false;
+  const PathDatabase::Entry* e = database_.find(key);
+  if (!e) return out;
   out.rejected = true;
   std::optional<rs::Path> path = database_.transformed(key, from, to);
   if (!path) return out;  // the ends moved apart: repair or plan
   const auto t0 = std::chrono::steady_clock::now();
   MotionValidator validator(*cspace_, radius_);
+  // Driven from the same start, the path is the same motion as when checked.
+  skipped = options_.skip_far_checks && e->from == from && still_free(*e);
   const bool valid = std::abs(path->radius - radius_) <= 1e-12 &&
                      pose_gap(final_pose(from, *path), to) <= tour_.planner.goal_tolerance &&
-                     validator.path_free(from, *path);
+                     (skipped || validator.path_free(from, *path));
+  skipped = skipped && valid;
   out.stats.collision_checks = validator.checks();
   out.stats.time_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
@@ -605,7 +671,7 @@ LegOutcome ReusePlanner::settle(const LegKey& key, Slot& slot, bool may_plan,
                                 LegPlanner& planner) const {
   slot.working = true;
   if (!slot.database_done) {
-    slot.database = from_database(key, slot.from, slot.to);
+    slot.database = from_database(key, slot.from, slot.to, slot.check_skipped);
     slot.database_done = true;
   }
   if (slot.database.found || !may_plan) {
@@ -763,6 +829,7 @@ ReuseCounters ReusePlanner::end_iteration() {
     if (slot->database_done && slot->database.found) {
       outcome = &slot->database;
       ++c.legs_database;
+      if (slot->check_skipped) ++c.checks_skipped;
       c.database_ms += outcome->stats.time_ms;
     } else if (planned) {
       outcome = &slot->planned;
@@ -801,7 +868,12 @@ ReuseCounters ReusePlanner::end_iteration() {
         ++failed_in_a_row_[key];
     }
     if (options_.paths && outcome) {
-      if (outcome->found) {
+      if (outcome == &slot->database) {
+        // path_free() held now (checked, or implied by still_free()).
+        std::vector<Pose2> now;
+        for (int i = 0; i < cspace_->object_count(); ++i) now.push_back(cspace_->object_pose(i));
+        database_.put(key, slot->from, slot->to, outcome->path, std::move(now));
+      } else if (outcome->found) {
         database_.put(key, slot->from, slot->to, outcome->path);
       } else {
         database_.erase(key);  // not valid here and not repairable

@@ -107,6 +107,12 @@ struct ReuseOptions {
   //! gap re-planned) before a fresh plan is tried.
   bool repair = true;
   int repair_iterations = 30;  //!< RRT iterations allowed to close a repair's gap
+  //! §V-B, exact (part of `paths`, no name of its own; off only in tests): a
+  //! stored path that path_free() found free in an earlier layout, driven
+  //! from the same start, is served without checking it again when every
+  //! object that moved since stays clear of it by a proven margin
+  //! (ReusePlanner::still_free): the check would pass.
+  bool skip_far_checks = true;
   //! §V-C: a tree is kept while its root moved at most this much (metres +
   //! radians); the tree moves rigidly with its root and is then pruned.
   double tree_root_tolerance = 0.1;
@@ -195,15 +201,27 @@ class PathDatabase final : public LegCache {
   struct Entry {
     rs::Path path;
     Pose2 from, to;  //!< world poses of the ends when stored
+    //! Object poses of a layout in which MotionValidator::path_free(from,
+    //! path) held; empty when the path was never checked that way (a fresh
+    //! or repaired path was checked in pieces, which is not the same query).
+    std::vector<Pose2> checked;
+    //! With `checked`: the chair's reference positions along the path from
+    //! `from`, at most kTraceStep metres apart, both ends included.
+    std::vector<geometry::Vec2> trace;
   };
   //! Ends whose relative poses differ by at most this are "the same" (m + rad).
   static constexpr double kRigidTolerance = 1e-9;
+  //! Spacing (metres of path) of Entry::trace.
+  static constexpr double kTraceStep = 0.1;
 
   const Entry* find(const LegKey& key) const;
   //! The stored path transformed to the ends `from`, `to` when they are
   //! rigidly the same as the stored ones, else nullopt.
   std::optional<rs::Path> transformed(const LegKey& key, const Pose2& from, const Pose2& to) const;
-  void put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path);
+  //! Stores the path; `checked`: the object poses of a layout in which
+  //! path_free(from, path) held (empty: not known), then the trace is kept.
+  void put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path,
+           std::vector<Pose2> checked = {});
   void erase(const LegKey& key) { entries_.erase(key); }
   std::size_t size() const { return entries_.size(); }
 
@@ -255,11 +273,14 @@ class TreeStore final : public TreeCache {
 //! Counts over a design run (or one iteration). Deterministic: legs are
 //! counted once per key and iteration, from the pure outcomes.
 struct ReuseCounters {
-  std::uint64_t legs_database = 0;    //!< served from the database, transformed and validated
-  std::uint64_t legs_repaired = 0;    //!< stored path repaired (valid part kept, gap planned)
-  std::uint64_t legs_planned = 0;     //!< planned fresh and found
-  std::uint64_t legs_failed = 0;      //!< planned fresh, nothing found
-  std::uint64_t legs_rejected = 0;    //!< stored paths not valid as they were
+  std::uint64_t legs_database = 0;  //!< served from the database, transformed and validated
+  std::uint64_t legs_repaired = 0;  //!< stored path repaired (valid part kept, gap planned)
+  std::uint64_t legs_planned = 0;   //!< planned fresh and found
+  std::uint64_t legs_failed = 0;    //!< planned fresh, nothing found
+  std::uint64_t legs_rejected = 0;  //!< stored paths not valid as they were
+  //! Of legs_database: no check run, every object moved since the last
+  //! check stood out of reach (ReuseOptions::skip_far_checks).
+  std::uint64_t checks_skipped = 0;
   std::uint64_t trees_reused = 0;     //!< fresh plans that grew a kept tree
   std::uint64_t failures_reused = 0;  //!< failed legs known to fail again (in legs_failed)
   std::uint64_t legs_proven = 0;      //!< failed legs proven impossible (in legs_failed)
@@ -323,8 +344,17 @@ class ReusePlanner final : public LegProvider {
   };
   //! True when the recorded failure of `key` provably repeats now.
   bool failure_repeats(const LegKey& key, const Pose2& from, const Pose2& to) const;
-  //! Stage A: the stored path, transformed and validated (no RRT).
-  LegOutcome from_database(const LegKey& key, const Pose2& from, const Pose2& to) const;
+  //! True when path_free(e.from, e.path), which held in the layout
+  //! e.checked, provably holds now: the walls never move and the footprint
+  //! of every object that moved since lies (now) farther than
+  //! still_free_margin_ from each point of e.trace. Its old pose blocked
+  //! nothing then and is gone, so no query of the check can change to
+  //! "blocked" (cspace.h; the margin's terms are in the constructor).
+  bool still_free(const PathDatabase::Entry& e) const;
+  //! Stage A: the stored path, transformed and validated (no RRT);
+  //! `skipped`: served without a check, by still_free().
+  LegOutcome from_database(const LegKey& key, const Pose2& from, const Pose2& to,
+                           bool& skipped) const;
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                       LegPlanner& planner, Slot& slot) const;
@@ -367,7 +397,8 @@ class ReusePlanner final : public LegProvider {
   mutable bool grid_current_ = false;
   mutable bool grid_unavailable_ = false;
   mutable std::vector<std::unique_ptr<geometry::ReachabilityQuery>> idle_queries_;
-  double reach_ = 0.0;  //!< how far from a node a collision query can look
+  double reach_ = 0.0;              //!< how far from a node a collision query can look
+  double still_free_margin_ = 0.0;  //!< see still_free()
   std::uint64_t iteration_seed_ = 0;
   std::mutex mutex_;  //!< guards slots_, leg_requests_ and the slots' `requested`
   std::atomic<std::uint64_t> speculated_{0}, speculated_used_{0};

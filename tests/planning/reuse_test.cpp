@@ -259,6 +259,117 @@ TEST(ReusePlanner, EveryReturnedPathIsValidInTheCurrentLayoutUnderRandomMoves) {
   EXPECT_GT(planned, 0u);
 }
 
+// `skip_far_checks` against the same run with every stored path checked:
+// the skip is a proof that the check would pass, so outcomes, counters and
+// stores must agree leg for leg. Moves are small shifts and turns and, one
+// in four, a jump anywhere in the room (onto stored paths, so that stored
+// paths are rejected too, and near them, where the margin matters); three
+// moves in four are taken back at the next iteration, as the annealer does.
+TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
+  std::uint64_t outcomes = 0, skipped = 0, database = 0, rejected = 0;
+  for (const std::string file : {"office.json", "living_room.json", "bedroom.json"}) {
+    geometry::Scene work =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    geometry::CSpace cspace(work);
+    ReuseOptions off = ReuseOptions::parse("all");
+    off.skip_far_checks = false;
+    ASSERT_TRUE(ReuseOptions::parse("all").skip_far_checks);
+    ReusePlanner with(work, cspace, {}, ReuseOptions::parse("all"), 3);
+    ReusePlanner without(work, cspace, {}, off, 3);
+    LegPlanner pw(work, cspace, {}, with.hooks().planner);
+    LegPlanner po(work, cspace, {}, without.hooks().planner);
+    double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
+    for (const auto& v : work.room.polygon) {
+      xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
+      xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
+    }
+    std::mt19937_64 rng(77);
+    const int n = static_cast<int>(work.objects.size());
+    // Legs between goal poses that exist in the initial layout.
+    std::vector<std::vector<GoalPose>> goals;
+    for (int i = 0; i < n; ++i)
+      goals.push_back(goal_poses(work, work.objects[i], work.objects[i].pose, cspace));
+    std::vector<LegKey> keys;
+    for (int i = 0; i < 24; ++i) {
+      const int a = static_cast<int>(rng() % (n + 1)) - 1;
+      const int b = (a + 1 + static_cast<int>(rng() % n)) % n;
+      if (a == b || goals[b].empty() || (a >= 0 && goals[a].empty())) continue;
+      keys.push_back({a, b, a < 0 ? 0 : goals[a][rng() % goals[a].size()].slot,
+                      goals[b][rng() % goals[b].size()].slot});
+    }
+    auto goal = [&](int object, int slot) -> std::optional<Pose2> {
+      if (object < 0) return geometry::door_start_pose(work);
+      for (const auto& g :
+           goal_poses(work, work.objects[object], cspace.object_pose(object), cspace))
+        if (g.slot == slot) return g.pose;
+      return std::nullopt;
+    };
+    // As in a design, most moves are taken back at the next iteration.
+    std::optional<std::pair<int, Pose2>> undo;
+    for (int iteration = 0; iteration < 60; ++iteration) {
+      if (undo && rng() % 4 != 0) {
+        work.objects[undo->first].pose = undo->second;
+        cspace.move_object(undo->first, undo->second);
+        undo.reset();
+      } else if (iteration > 0) {
+        const int moved = static_cast<int>(rng() % n);
+        Pose2 p = work.objects[moved].pose;
+        undo.emplace(moved, p);
+        if (rng() % 4 == 0) {
+          p = {xmin + (xmax - xmin) * testing::unit01(rng),
+               ymin + (ymax - ymin) * testing::unit01(rng),
+               std::numbers::pi * (2 * testing::unit01(rng) - 1)};
+        } else {
+          p.x += 0.2 * (2 * testing::unit01(rng) - 1);
+          p.y += 0.2 * (2 * testing::unit01(rng) - 1);
+          p.theta = geometry::wrap_angle(p.theta + 0.2 * (2 * testing::unit01(rng) - 1));
+        }
+        work.objects[moved].pose = p;
+        cspace.move_object(moved, p);
+      }
+      with.begin_iteration(900 + static_cast<std::uint64_t>(iteration));
+      without.begin_iteration(900 + static_cast<std::uint64_t>(iteration));
+      const std::string where = file + " iteration " + std::to_string(iteration);
+      for (const LegKey& key : keys) {
+        const auto from = goal(key.from_object, key.from_slot);
+        const auto to = goal(key.to_object, key.to_slot);
+        if (!from || !to) continue;
+        const LegOutcome x = without.resolve(key, *from, *to, 0, true, po);
+        const LegOutcome y = with.resolve(key, *from, *to, 0, true, pw);
+        EXPECT_EQ(x.found, y.found) << where;
+        EXPECT_EQ(x.source, y.source) << where;
+        EXPECT_EQ(x.rejected, y.rejected) << where;
+        EXPECT_EQ(x.planned, y.planned) << where;
+        EXPECT_EQ(x.path.segments, y.path.segments) << where;
+        ++outcomes;
+      }
+      const ReuseCounters a = without.end_iteration();
+      const ReuseCounters b = with.end_iteration();
+      EXPECT_EQ(a.checks_skipped, 0u) << where;
+      EXPECT_EQ(a.legs_database, b.legs_database) << where;
+      EXPECT_EQ(a.legs_rejected, b.legs_rejected) << where;
+      EXPECT_EQ(a.legs_repaired, b.legs_repaired) << where;
+      EXPECT_EQ(a.legs_planned, b.legs_planned) << where;
+      EXPECT_EQ(a.legs_failed, b.legs_failed) << where;
+      EXPECT_EQ(a.rrt_iterations, b.rrt_iterations) << where;
+      skipped += b.checks_skipped;
+      database += b.legs_database;
+      rejected += b.legs_rejected;
+    }
+    EXPECT_EQ(with.database().size(), without.database().size()) << file;
+  }
+  std::printf(
+      "%llu outcomes; %llu served from the database, %llu of them without a check; "
+      "%llu stored paths rejected\n",
+      static_cast<unsigned long long>(outcomes), static_cast<unsigned long long>(database),
+      static_cast<unsigned long long>(skipped), static_cast<unsigned long long>(rejected));
+  // Both sides of the proof must be exercised: skips and rejections.
+  EXPECT_GT(outcomes, 1000u);
+  EXPECT_GT(skipped, 100u);
+  EXPECT_GT(database - skipped, 100u);
+  EXPECT_GT(rejected, 20u);
+}
+
 // Within an iteration every request of a key gets the same outcome, and a
 // stored path survives to the next iteration when nothing moved.
 TEST(ReusePlanner, SameKeySameOutcomeAndUnchangedLayoutIsServedFromTheDatabase) {
