@@ -18,6 +18,17 @@ namespace hrs::geometry {
 
 using Polygon = std::vector<Vec2>;  //!< vertices, counter-clockwise, not closed
 
+//! True if `p` is inside the simple polygon (even-odd crossings, doubles: for
+//! filters and margins, not for exact predicates).
+inline bool point_in_polygon(Vec2 p, const Polygon& poly) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const Vec2 a = poly[i], b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
 //! The room: the inner face of the walls, any simple polygon.
 struct Room {
   Polygon polygon;                            //!< counter-clockwise

@@ -15,18 +15,10 @@ using geometry::Vec2;
 
 namespace {
 
-bool inside(Vec2 p, const Polygon& poly) {
-  bool in = false;
-  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
-    const Vec2 a = poly[i], b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
-  }
-  return in;
-}
-
 //! Distance between two simple polygons (0 when they overlap).
 double polygon_distance(const Polygon& a, const Polygon& b) {
-  if (inside(a.front(), b) || inside(b.front(), a)) return 0.0;
+  if (geometry::point_in_polygon(a.front(), b) || geometry::point_in_polygon(b.front(), a))
+    return 0.0;
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < a.size(); ++i) {
     const Vec2 a0 = a[i], a1 = a[(i + 1) % a.size()];

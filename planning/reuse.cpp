@@ -242,17 +242,8 @@ std::optional<rs::Path> PathDatabase::transformed(const LegKey& key, const Pose2
 void PathDatabase::put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path,
                        std::vector<Pose2> checked) {
   Entry e{path, from, to, std::move(checked), {}};
-  if (!e.checked.empty()) {
-    Pose2 p = from;
-    e.trace.push_back(p.position());
-    for (const rs::Segment& seg : path.segments) {
-      const auto [pieces, part] = cut_segment(seg, kTraceStep);
-      for (int i = 0; i < pieces; ++i) {
-        p = rs::advance(p, part, path.radius);
-        e.trace.push_back(p.position());
-      }
-    }
-  }
+  if (!e.checked.empty())
+    for (const Pose2& p : rs::sample(from, path, kTraceStep)) e.trace.push_back(p.position());
   entries_[key] = std::move(e);
 }
 
@@ -435,35 +426,23 @@ void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
 bool ReusePlanner::still_free(const PathDatabase::Entry& e) const {
   if (e.checked.size() != static_cast<std::size_t>(cspace_->object_count())) return false;
   const double m = still_free_margin_;
-  std::vector<geometry::Vec2> fp;
+  geometry::Polygon fp;
   for (int i = 0; i < cspace_->object_count(); ++i) {
     const Pose2& now = cspace_->object_pose(i);
     if (now == e.checked[i]) continue;
     // The footprint where the object stands now, and its box grown by m.
-    const double c = std::cos(now.theta), s = std::sin(now.theta);
     fp.clear();
     double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
     for (const geometry::Vec2& v : scene_.objects[i].footprint) {
-      fp.push_back({now.x + c * v.x - s * v.y, now.y + s * v.x + c * v.y});
+      fp.push_back(geometry::to_world(now, v));
       xmin = std::min(xmin, fp.back().x), ymin = std::min(ymin, fp.back().y);
       xmax = std::max(xmax, fp.back().x), ymax = std::max(ymax, fp.back().y);
     }
     for (const geometry::Vec2& p : e.trace) {
       if (p.x < xmin - m || p.x > xmax + m || p.y < ymin - m || p.y > ymax + m) continue;
-      // Inside (even-odd crossings) or within m of an edge: possibly blocked.
-      bool inside = false;
-      double d2 = 1e300;
-      for (std::size_t k = 0, j = fp.size() - 1; k < fp.size(); j = k++) {
-        const geometry::Vec2 a = fp[j], b = fp[k];
-        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y))
-          inside = !inside;
-        const double ex = b.x - a.x, ey = b.y - a.y, len2 = ex * ex + ey * ey;
-        double t = len2 > 0.0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0.0;
-        t = std::clamp(t, 0.0, 1.0);
-        const double dx = p.x - (a.x + t * ex), dy = p.y - (a.y + t * ey);
-        d2 = std::min(d2, dx * dx + dy * dy);
-      }
-      if (inside || d2 <= m * m) return false;
+      if (geometry::point_in_polygon(p, fp)) return false;
+      for (std::size_t k = 0, j = fp.size() - 1; k < fp.size(); j = k++)
+        if (geometry::point_segment_distance(p, fp[j], fp[k]) <= m) return false;
     }
   }
   return true;

@@ -31,6 +31,16 @@ Pose2 apply(const Pose2& t, const Pose2& p) {
   return {q.x, q.y, geometry::wrap_angle(p.theta + t.theta)};
 }
 
+//! Goal pose `slot` of `object` where it stands now (−1: the door's start
+//! pose), or nullopt when that slot has no valid pose there.
+std::optional<Pose2> goal_pose(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                               int object, int slot) {
+  if (object < 0) return geometry::door_start_pose(scene);
+  for (const auto& g : goal_poses(scene, scene.objects[object], cspace.object_pose(object), cspace))
+    if (g.slot == slot) return g.pose;
+  return std::nullopt;
+}
+
 //! The whole scene (room, door, objects) moved by the rigid transform `t`.
 geometry::Scene moved_scene(geometry::Scene scene, const Pose2& t) {
   for (auto& v : scene.room.polygon) v = geometry::to_world(t, v);
@@ -208,13 +218,7 @@ TEST(ReusePlanner, EveryReturnedPathIsValidInTheCurrentLayoutUnderRandomMoves) {
       if (b == a) b = (b + 1) % n;
       keys.push_back({a, b, a < 0 ? 0 : static_cast<int>(rng() % 8), static_cast<int>(rng() % 8)});
     }
-    auto goal = [&](int object, int slot) -> std::optional<Pose2> {
-      if (object < 0) return geometry::door_start_pose(work);
-      for (const auto& g :
-           goal_poses(work, work.objects[object], cspace.object_pose(object), cspace))
-        if (g.slot == slot) return g.pose;
-      return std::nullopt;
-    };
+    auto goal = [&](int object, int slot) { return goal_pose(work, cspace, object, slot); };
     for (int iteration = 0; iteration < 14; ++iteration) {
       if (iteration > 0) {
         const int moved = static_cast<int>(rng() % n);
@@ -278,11 +282,6 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
     ReusePlanner without(work, cspace, {}, off, 3);
     LegPlanner pw(work, cspace, {}, with.hooks().planner);
     LegPlanner po(work, cspace, {}, without.hooks().planner);
-    double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-    for (const auto& v : work.room.polygon) {
-      xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
-      xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
-    }
     std::mt19937_64 rng(77);
     const int n = static_cast<int>(work.objects.size());
     // Legs between goal poses that exist in the initial layout.
@@ -297,13 +296,7 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
       keys.push_back({a, b, a < 0 ? 0 : goals[a][rng() % goals[a].size()].slot,
                       goals[b][rng() % goals[b].size()].slot});
     }
-    auto goal = [&](int object, int slot) -> std::optional<Pose2> {
-      if (object < 0) return geometry::door_start_pose(work);
-      for (const auto& g :
-           goal_poses(work, work.objects[object], cspace.object_pose(object), cspace))
-        if (g.slot == slot) return g.pose;
-      return std::nullopt;
-    };
+    auto goal = [&](int object, int slot) { return goal_pose(work, cspace, object, slot); };
     // As in a design, most moves are taken back at the next iteration.
     std::optional<std::pair<int, Pose2>> undo;
     for (int iteration = 0; iteration < 60; ++iteration) {
@@ -316,9 +309,7 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
         Pose2 p = work.objects[moved].pose;
         undo.emplace(moved, p);
         if (rng() % 4 == 0) {
-          p = {xmin + (xmax - xmin) * testing::unit01(rng),
-               ymin + (ymax - ymin) * testing::unit01(rng),
-               std::numbers::pi * (2 * testing::unit01(rng) - 1)};
+          p = testing::random_room_pose(work, rng);
         } else {
           p.x += 0.2 * (2 * testing::unit01(rng) - 1);
           p.y += 0.2 * (2 * testing::unit01(rng) - 1);
