@@ -796,6 +796,8 @@ ReuseCounters ReusePlanner::end_iteration() {
   unshared_ = {};
   c.leg_requests += leg_requests_;
   std::set<RootKey> roots;
+  std::vector<Pose2> layout;  // the iteration's object poses, for the stores
+  for (int i = 0; i < cspace_->object_count(); ++i) layout.push_back(cspace_->object_pose(i));
   for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
     if (!slot->requested) continue;   // computed by `speculate` only: no trace
     // Stage B counts only when a tour asked for the leg with planning
@@ -832,10 +834,7 @@ ReuseCounters ReusePlanner::end_iteration() {
     }
     if (options_.failures && planned) {
       if (!slot->failed_points.empty()) {
-        Failure f{slot->from, slot->to, {}, std::move(slot->failed_points)};
-        for (int i = 0; i < cspace_->object_count(); ++i)
-          f.layout.push_back(cspace_->object_pose(i));
-        failures_[key] = std::move(f);
+        failures_[key] = Failure{slot->from, slot->to, layout, std::move(slot->failed_points)};
       } else if (slot->planned.found) {
         failures_.erase(key);
       }
@@ -849,9 +848,7 @@ ReuseCounters ReusePlanner::end_iteration() {
     if (options_.paths && outcome) {
       if (outcome == &slot->database) {
         // path_free() held now (checked, or implied by still_free()).
-        std::vector<Pose2> now;
-        for (int i = 0; i < cspace_->object_count(); ++i) now.push_back(cspace_->object_pose(i));
-        database_.put(key, slot->from, slot->to, outcome->path, std::move(now));
+        database_.put(key, slot->from, slot->to, outcome->path, layout);
       } else if (outcome->found) {
         database_.put(key, slot->from, slot->to, outcome->path);
       } else {
