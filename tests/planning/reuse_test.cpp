@@ -88,8 +88,7 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
 }
 
 TEST(DecompositionSampler, SamplesLieInTheRoomBox) {
-  const geometry::Scene scene =
-      geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/office.json");
+  const geometry::Scene scene = testing::shipped_scene("office.json");
   rs::DecompositionOptions d;
   d.radius = scene.wheelchair.turning_radius;
   double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
@@ -143,8 +142,7 @@ TEST(DecompositionSteering, PathsEndAtTheTarget) {
 TEST(PathDatabase, PathBetweenRigidlyMovedObjectsEndsAtTheNewPosesAndIsFree) {
   int checked = 0;
   for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
-    const geometry::Scene scene =
-        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::Scene scene = testing::shipped_scene(file);
     const geometry::CSpace cspace(scene);
     LegPlanner planner(scene, cspace);
     const double radius = scene.wheelchair.turning_radius;
@@ -202,8 +200,7 @@ TEST(PathDatabase, PathBetweenRigidlyMovedObjectsEndsAtTheNewPosesAndIsFree) {
 TEST(ReusePlanner, EveryReturnedPathIsValidInTheCurrentLayoutUnderRandomMoves) {
   std::uint64_t reused = 0, repaired = 0, planned = 0, failures_reused = 0;
   for (const std::string file : {"office.json", "living_room.json", "bedroom.json"}) {
-    geometry::Scene work =
-        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    geometry::Scene work = testing::shipped_scene(file);
     geometry::CSpace cspace(work);
     ReusePlanner reuse(work, cspace, {}, ReuseOptions{}, 7);
     LegPlanner planner(work, cspace, {}, reuse.hooks().planner);
@@ -272,8 +269,7 @@ TEST(ReusePlanner, EveryReturnedPathIsValidInTheCurrentLayoutUnderRandomMoves) {
 TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
   std::uint64_t outcomes = 0, skipped = 0, database = 0, rejected = 0;
   for (const std::string file : {"office.json", "living_room.json", "bedroom.json"}) {
-    geometry::Scene work =
-        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    geometry::Scene work = testing::shipped_scene(file);
     geometry::CSpace cspace(work);
     ReuseOptions off = ReuseOptions::parse("all");
     off.skip_far_checks = false;
@@ -309,7 +305,7 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
         Pose2 p = work.objects[moved].pose;
         undo.emplace(moved, p);
         if (rng() % 4 == 0) {
-          p = testing::random_room_pose(work, rng);
+          p = testing::random_pose(work, rng);
         } else {
           p.x += 0.2 * (2 * testing::unit01(rng) - 1);
           p.y += 0.2 * (2 * testing::unit01(rng) - 1);
@@ -364,8 +360,7 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
 // Within an iteration every request of a key gets the same outcome, and a
 // stored path survives to the next iteration when nothing moved.
 TEST(ReusePlanner, SameKeySameOutcomeAndUnchangedLayoutIsServedFromTheDatabase) {
-  const geometry::Scene scene =
-      geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/living_room.json");
+  const geometry::Scene scene = testing::shipped_scene("living_room.json");
   const geometry::CSpace cspace(scene);
   ReusePlanner reuse(scene, cspace, {}, ReuseOptions::parse("paths"), 1);
   LegPlanner p1(scene, cspace, {}, reuse.hooks().planner), p2(scene, cspace);
@@ -403,8 +398,7 @@ TEST(ReusePlanner, BudgetFindsExactlyTheLegsTheFullRunFoundWithinIt) {
   const int budget = capped.budget_iterations;
   int legs = 0, within = 0, beyond = 0, neither = 0;
   for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
-    const geometry::Scene scene =
-        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::Scene scene = testing::shipped_scene(file);
     const geometry::CSpace cspace(scene);
     ReusePlanner a(scene, cspace, {}, capped, 3), b(scene, cspace, {}, full, 3);
     LegPlanner pa(scene, cspace, {}, a.hooks().planner), pb(scene, cspace, {}, b.hooks().planner);
@@ -463,8 +457,7 @@ TEST(ReusePlanner, BackoffHalvesTheBudgetOfLegsThatKeepFailing) {
   ASSERT_LT(floor, budget);
   int floored = 0, found_after_failing = 0, failed_after_found = 0, checked = 0;
   for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
-    const geometry::Scene scene =
-        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::Scene scene = testing::shipped_scene(file);
     const geometry::CSpace cspace(scene);
     ReusePlanner reuse(scene, cspace, {}, o, 5);
     LegPlanner planner(scene, cspace, {}, reuse.hooks().planner);
@@ -526,8 +519,7 @@ TEST(ReusePlanner, SpeculationChangesNoOutcomeAndLeavesNoTrace) {
   constexpr int kThreads = 4;
   std::uint64_t requests = 0, failed = 0, speculated = 0, used = 0;
   for (const std::string file : {"living_room.json", "office.json"}) {
-    geometry::Scene work =
-        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    geometry::Scene work = testing::shipped_scene(file);
     geometry::CSpace cspace(work);
     const ReuseOptions options = ReuseOptions::parse("all");
     ASSERT_TRUE(options.speculate);

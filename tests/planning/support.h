@@ -25,22 +25,16 @@ namespace hrs::testing {
 //! Paths of the scene files shipped in scenes/ (sorted).
 inline std::vector<std::string> planning_scene_files() { return scene_files(); }
 
-//! A uniformly random pose in the room's box (free or not).
-inline geometry::Pose2 random_room_pose(const geometry::Scene& scene, std::mt19937_64& rng) {
-  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-  for (auto v : scene.room.polygon) {
-    xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
-    xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
-  }
-  return {xmin + (xmax - xmin) * unit01(rng), ymin + (ymax - ymin) * unit01(rng),
-          std::numbers::pi * (2 * unit01(rng) - 1)};
+//! A shipped scene by file name, e.g. "office.json".
+inline geometry::Scene shipped_scene(const std::string& file) {
+  return geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
 }
 
 //! A uniformly random pose in the room's box that the C-space certifies free.
 inline geometry::Pose2 random_free_pose(const geometry::Scene& scene,
                                         const geometry::CSpace& cspace, std::mt19937_64& rng) {
   for (;;) {
-    const geometry::Pose2 p = random_room_pose(scene, rng);
+    const geometry::Pose2 p = random_pose(scene, rng);
     if (cspace.is_free(p)) return p;
   }
 }
