@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "experiments/args.h"
-#include "experiments/commands.h"
+#include "cli/args.h"
+#include "cli/commands.h"
 #include "geometry/cspace.h"
 #include "geometry/error.h"
 #include "geometry/free_grid.h"

@@ -4,8 +4,8 @@
 #include <iostream>
 #include <string>
 
-#include "experiments/args.h"
-#include "experiments/commands.h"
+#include "cli/args.h"
+#include "cli/commands.h"
 #include "geometry/cspace.h"
 #include "geometry/error.h"
 #include "geometry/scene.h"

@@ -6,8 +6,8 @@
 #include <iostream>
 #include <string>
 
-#include "experiments/args.h"
-#include "experiments/commands.h"
+#include "cli/args.h"
+#include "cli/commands.h"
 #include "geometry/error.h"
 #include "rs/reeds_shepp.h"
 

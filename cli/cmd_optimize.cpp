@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "experiments/args.h"
-#include "experiments/commands.h"
+#include "cli/args.h"
+#include "cli/commands.h"
 #include "geometry/error.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/commands.h"
+#include "cli/commands.h"
 #include "geometry/error.h"
 
 namespace {
@@ -25,6 +25,8 @@ constexpr Command kCommands[] = {
     {"plan", "one wheelchair leg by the baseline RRT (JSON)", hrs::cli::cmd_plan},
     {"tour", "one tour of an object sequence from the door (JSON)", hrs::cli::cmd_tour},
     {"design", "optimize a room layout (layout, tours, SVG, report)", hrs::cli::cmd_design},
+    {"experiment", "run a study of the paper's experiments (CSV tables)",
+     hrs::cli::cmd_experiment},
 };
 
 void usage(std::ostream& out) {
@@ -32,7 +34,7 @@ void usage(std::ostream& out) {
          "hrspace designs rooms shared by people and a self-driving wheelchair.\n\ncommands:\n";
   for (const auto& c : kCommands) {
     std::string n = c.name;
-    n.resize(10, ' ');
+    n.resize(12, ' ');
     out << "  " << n << c.summary << "\n";
   }
 }

@@ -1,0 +1,204 @@
+// `hrspace experiment`: the experiments harness on the command line
+// (experiments/study.h): one study, every study, or a merge of shard outputs.
+
+#include <unistd.h>
+
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/args.h"
+#include "cli/commands.h"
+#include "experiments/runner.h"
+#include "experiments/study.h"
+#include "geometry/error.h"
+
+namespace hrs::cli {
+
+namespace {
+
+std::atomic<bool> g_stop{false};
+std::atomic<int> g_signal{0};
+
+// The first signal asks for a clean stop (runs in flight are dropped, the
+// tables of the finished ones are written); a second one ends the process.
+extern "C" void on_stop_signal(int sig) {
+  if (g_stop.exchange(true)) {
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+  }
+  g_signal.store(sig);
+}
+
+std::string usage_text() {
+  std::string s =
+      "hrspace experiment STUDY|all --out DIR [--seeds N] [--iterations N] [--threads T]\n"
+      "                   [--jobs J] [--shard i/n] [--quick] [--rooms LIST] [--scenes DIR]\n"
+      "hrspace experiment merge STUDY|all --out DIR SHARD_DIR...\n"
+      "hrspace experiment list\n\n"
+      "Runs a study of the paper's experiments (§VI) and writes DIR/STUDY/runs.csv (one row\n"
+      "per run: parameters, measures, commit, CPU, threads), DIR/STUDY/summary.csv (mean, sd,\n"
+      "n per group, ratios) and the study's extra tables and designs. Runs already stored\n"
+      "under DIR are skipped, so a killed sweep resumes where it stopped.\n"
+      "paper_figures/plot.py draws the figures and REPRODUCTION.md from DIR.\n\n"
+      "  --out DIR       root of the outputs (required)\n"
+      "  --seeds N       seeds 1..N (default 10; --quick: 2)\n"
+      "  --iterations N  annealing iterations per design (default 700; --quick: 100)\n"
+      "  --threads T     tour-planning threads per design (default 1, so timings compare)\n"
+      "  --jobs J        designs run at once (default 1)\n"
+      "  --shard i/n     run only the i-th of n deterministic parts (merge them afterwards)\n"
+      "  --quick         the smallest sweep that writes every output (tests, smoke runs)\n"
+      "  --rooms LIST    rooms instead of the study's own: scene names or .json paths\n"
+      "  --scenes DIR    where scene names are looked up (default: the source's scenes/)\n\n"
+      "studies:\n";
+  for (const auto& st : experiments::studies()) {
+    std::string n = st.name;
+    n.resize(18, ' ');
+    s += "  " + n + st.description + "\n  " + std::string(18, ' ') + "(" + st.paper + ")\n";
+  }
+  s += "\nCtrl-C, SIGTERM or SIGHUP stops after the runs in flight are dropped and writes the\n"
+       "tables of the finished runs (exit 128 + signal); rerun the same command to resume.\n";
+  return s;
+}
+
+std::vector<const experiments::Study*> select(const std::string& name) {
+  std::vector<const experiments::Study*> out;
+  if (name == "all") {
+    for (const auto& s : experiments::studies()) out.push_back(&s);
+    return out;
+  }
+  const experiments::Study* s = experiments::find_study(name);
+  if (!s) {
+    std::string known;
+    for (const auto& st : experiments::studies()) known += (known.empty() ? "" : ", ") + st.name;
+    throw InputError("unknown study '" + name + "' (one of: all, " + known + ")");
+  }
+  out.push_back(s);
+  return out;
+}
+
+std::vector<std::string> split_list(const std::string& text, const std::string& what) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    const std::string item = text.substr(start, end - start);
+    if (item.empty()) throw InputError(what + ": empty item in '" + text + "'");
+    out.push_back(item);
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+int cmd_experiment(const Argv& argv) {
+  const Args args(argv,
+                  {"out", "seeds", "iterations", "threads", "jobs", "shard", "rooms", "scenes"},
+                  {"quick"});
+  if (args.help()) {
+    std::cout << "usage: " << usage_text();
+    return 0;
+  }
+  if (!args.positional().empty() && args.positional()[0] == "list") {
+    for (const auto& st : experiments::studies())
+      std::cout << st.name << "\t" << st.description << "\n";
+    return 0;
+  }
+  const bool merge = !args.positional().empty() && args.positional()[0] == "merge";
+  if (args.positional().size() < (merge ? 3u : 1u) || (!merge && args.positional().size() != 1))
+    throw InputError(merge ? "usage: hrspace experiment merge STUDY|all --out DIR SHARD_DIR..."
+                           : "usage: hrspace experiment STUDY|all --out DIR [options] (see --help)");
+  const auto out = args.get("out");
+  if (!out || out->empty()) throw InputError("--out DIR is required (see --help)");
+
+  experiments::StudyConfig config;
+  config.quick = args.flag("quick");
+  config.seeds = static_cast<int>(args.integer("seeds", config.quick ? 2 : 10, 1, 10000));
+  config.iterations =
+      static_cast<int>(args.integer("iterations", config.quick ? 100 : 700, 1, 10000000));
+  config.threads = static_cast<int>(args.integer("threads", 1, 0, 1024));
+  config.out = *out;
+#ifdef HRSPACE_SOURCE_DIR
+  config.scenes_dir = std::filesystem::path(HRSPACE_SOURCE_DIR) / "scenes";
+#endif
+  if (const auto s = args.get("scenes")) config.scenes_dir = *s;
+  if (const auto r = args.get("rooms")) {
+    config.rooms = split_list(*r, "--rooms");
+    for (const auto& room : config.rooms) {
+      const std::filesystem::path p = room.ends_with(".json")
+                                          ? std::filesystem::path(room)
+                                          : config.scenes_dir / (room + ".json");
+      if (!std::filesystem::is_regular_file(p))
+        throw InputError("--rooms: '" + room + "': no scene file " + p.string());
+    }
+  }
+
+  if (merge) {
+    std::vector<std::filesystem::path> shards;
+    for (std::size_t i = 2; i < args.positional().size(); ++i) {
+      if (!std::filesystem::is_directory(args.positional()[i]))
+        throw InputError(args.positional()[i] + ": not a directory");
+      shards.emplace_back(args.positional()[i]);
+    }
+    int missing = 0;
+    for (const experiments::Study* s : select(args.positional()[1])) {
+      const int m = experiments::merge_shards(*s, config, shards);
+      std::cout << s->name << ": merged " << shards.size() << " shard(s) into "
+                << (config.out / s->name).string() << (m ? ", " + std::to_string(m) + " runs missing" : "")
+                << "\n";
+      missing += m;
+    }
+    std::cout.flush();
+    if (!std::cout) throw std::runtime_error("write error on standard output");
+    return 0;
+  }
+
+  experiments::RunnerOptions options;
+  options.jobs = static_cast<int>(args.integer("jobs", 1, 1, 256));
+  if (const auto shard = args.get("shard")) {
+    const auto slash = shard->find('/');
+    const std::vector<double> n =
+        slash == std::string::npos
+            ? std::vector<double>{}
+            : parse_numbers(shard->substr(0, slash) + "," + shard->substr(slash + 1), 2, "--shard");
+    if (n.size() != 2 || n[0] != std::floor(n[0]) || n[1] != std::floor(n[1]) || n[1] < 1 ||
+        n[0] < 1 || n[0] > n[1] || n[1] > 100000)
+      throw InputError("--shard '" + *shard + "': expected i/n with 1 <= i <= n");
+    options.shard_index = static_cast<int>(n[0]);
+    options.shard_count = static_cast<int>(n[1]);
+  }
+  options.progress = isatty(STDERR_FILENO) != 0;
+  options.stop = &g_stop;
+  const std::vector<const experiments::Study*> chosen = select(args.positional()[0]);
+
+  g_stop.store(false);
+  struct sigaction action {};
+  action.sa_handler = on_stop_signal;
+  sigemptyset(&action.sa_mask);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP}) sigaction(sig, &action, nullptr);
+
+  int failed = 0;
+  for (const experiments::Study* s : chosen) {
+    if (g_stop.load()) break;
+    const experiments::RunnerReport r = experiments::run_study(*s, config, options);
+    for (const auto& e : r.errors) std::cerr << "hrspace experiment: " << s->name << ": " << e << "\n";
+    std::cout << s->name << ": " << r.done << " run, " << r.skipped << " already stored, "
+              << r.failed << " failed";
+    if (options.shard_count > 1)
+      std::cout << " (shard " << options.shard_index << "/" << options.shard_count << ": "
+                << r.in_shard << " of " << r.total << " runs)";
+    if (r.missing) std::cout << "; " << r.missing << " of " << r.total << " runs not stored yet";
+    std::cout << " -> " << (config.out / s->name).string() << "\n" << std::flush;
+    failed += r.failed;
+  }
+  std::cout.flush();
+  if (!std::cout) throw std::runtime_error("write error on standard output");
+  if (g_stop.load()) return 128 + (g_signal.load() ? g_signal.load() : SIGINT);
+  return failed ? 1 : 0;
+}
+
+}  // namespace hrs::cli

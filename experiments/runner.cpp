@@ -1,0 +1,370 @@
+#include "experiments/runner.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <thread>
+
+#include "geometry/error.h"
+
+namespace hrs::experiments {
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+// --- recordings -------------------------------------------------------------
+
+fs::path Recordings::path(const std::string& room, std::uint64_t seed, int iterations) const {
+  return dir_ / (room + "-s" + std::to_string(seed) + "-i" + std::to_string(iterations) + ".json");
+}
+
+namespace {
+
+json layouts_json(const Recordings::Layouts& layouts) {
+  json out = json::array();
+  for (const auto& poses : layouts) {
+    json l = json::array();
+    for (const auto& p : poses) l.push_back({p.x, p.y, p.theta});
+    out.push_back(std::move(l));
+  }
+  return out;
+}
+
+Recordings::Layouts layouts_from(const json& j) {
+  Recordings::Layouts out;
+  for (const auto& l : j) {
+    std::vector<geometry::Pose2> poses;
+    for (const auto& p : l)
+      poses.push_back({p.at(0).get<double>(), p.at(1).get<double>(), p.at(2).get<double>()});
+    out.push_back(std::move(poses));
+  }
+  return out;
+}
+
+}  // namespace
+
+Recordings::Layouts Recordings::get(const std::string& room, std::uint64_t seed, int iterations,
+                                    const std::function<Layouts()>& record) {
+  const fs::path file = path(room, seed, iterations);
+  std::shared_ptr<std::mutex> busy;
+  {
+    std::lock_guard lock(mutex_);
+    auto& slot = busy_[file.string()];
+    if (!slot) slot = std::make_shared<std::mutex>();
+    busy = slot;
+  }
+  std::lock_guard lock(*busy);  // one job records, the others wait for its file
+  if (fs::exists(file)) {
+    try {
+      return layouts_from(json::parse(read_text(file)));
+    } catch (const json::exception&) {
+      // A damaged recording is recorded again below.
+    }
+  }
+  Layouts layouts = record();
+  fs::create_directories(dir_);
+  write_text_atomic(file, layouts_json(layouts).dump() + "\n");
+  return layouts;
+}
+
+void Recordings::put(const std::string& room, std::uint64_t seed, int iterations,
+                     const Layouts& layouts) {
+  const fs::path file = path(room, seed, iterations);
+  std::shared_ptr<std::mutex> busy;
+  {
+    std::lock_guard lock(mutex_);
+    auto& slot = busy_[file.string()];
+    if (!slot) slot = std::make_shared<std::mutex>();
+    busy = slot;
+  }
+  std::lock_guard lock(*busy);
+  if (fs::exists(file)) return;
+  fs::create_directories(dir_);
+  write_text_atomic(file, layouts_json(layouts).dump() + "\n");
+}
+
+// --- environment ------------------------------------------------------------
+
+namespace {
+
+std::string first_line_of_command(const std::string& command) {
+  std::string out;
+  if (std::FILE* p = ::popen(command.c_str(), "r")) {
+    char buf[256];
+    if (std::fgets(buf, sizeof buf, p)) out = buf;
+    ::pclose(p);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) {
+        std::string m = line.substr(colon + 1);
+        while (!m.empty() && m.front() == ' ') m.erase(m.begin());
+        return m;
+      }
+    }
+  }
+  return "unknown";
+}
+
+}  // namespace
+
+Row environment_cells(int threads) {
+  static const std::string commit = [] {
+    if (const char* c = std::getenv("HRSPACE_COMMIT"); c && *c) return std::string(c);
+#ifdef HRSPACE_SOURCE_DIR
+    const std::string c = first_line_of_command(
+        "git -C '" HRSPACE_SOURCE_DIR "' rev-parse --short=12 HEAD 2>/dev/null");
+    if (!c.empty()) {
+      const std::string dirty = first_line_of_command(
+          "git -C '" HRSPACE_SOURCE_DIR "' status --porcelain --untracked-files=no 2>/dev/null");
+      return dirty.empty() ? c : c + "-dirty";
+    }
+#endif
+    return std::string("unknown");
+  }();
+  static const std::string cpu = cpu_model();
+  Row r;
+  r.set("commit", commit);
+  r.set("cpu", cpu);
+  r.set("threads", threads);
+  r.set("cores", static_cast<long>(std::thread::hardware_concurrency()));
+  return r;
+}
+
+// --- running ----------------------------------------------------------------
+
+std::vector<RunSpec> select_shard(const std::vector<RunSpec>& runs, int index, int count) {
+  if (count < 1 || index < 1 || index > count)
+    throw InputError("--shard " + std::to_string(index) + "/" + std::to_string(count) +
+                     ": needs 1 <= i <= n");
+  std::vector<RunSpec> out;
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (static_cast<int>(k % count) == index - 1) out.push_back(runs[k]);
+  return out;
+}
+
+namespace {
+
+fs::path run_file(const fs::path& study_dir, const std::string& key) {
+  return study_dir / "runs" / (key + ".csv");
+}
+
+fs::path table_file(const fs::path& study_dir, const std::string& key, const std::string& table) {
+  return study_dir / "runs" / (key + "." + table + ".csv");
+}
+
+std::string format_clock(double seconds) {
+  const long s = static_cast<long>(seconds + 0.5);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+  return buf;
+}
+
+//! Stores one finished run: its extra tables first, the run row last, so the
+//! row's presence means the run is complete.
+void store_run(const fs::path& study_dir, const RunSpec& spec, const RunOutput& out,
+               const StudyConfig& config, const std::string& study) {
+  for (const auto& [name, table] : out.tables) {
+    Table rows;
+    for (const Row& t : table) {
+      Row r;
+      r.set("key", spec.key);
+      r.merge(spec.params);
+      r.merge(t);
+      rows.push_back(std::move(r));
+    }
+    write_text_atomic(table_file(study_dir, spec.key, name), to_csv(rows));
+  }
+  Row row;
+  row.set("study", study);
+  row.set("key", spec.key);
+  row.merge(spec.params);
+  row.merge(out.measures);
+  row.merge(environment_cells(config.threads));
+  std::string tables;
+  for (const auto& [name, table] : out.tables) tables += (tables.empty() ? "" : ";") + name;
+  row.set("tables", tables);
+  write_text_atomic(run_file(study_dir, spec.key), to_csv({row}));
+}
+
+}  // namespace
+
+RunnerReport run_study(const Study& study, const StudyConfig& config,
+                       const RunnerOptions& options) {
+  const fs::path study_dir = config.out / study.name;
+  std::error_code ec;
+  fs::create_directories(study_dir / "runs", ec);
+  if (ec) throw InputError(study_dir.string() + ": cannot create directory: " + ec.message());
+  // Fail now, not after hours of work, when the directory is not writable.
+  write_text_atomic(study_dir / ".writable", "");
+  fs::remove(study_dir / ".writable", ec);
+
+  const std::vector<RunSpec> all = study.runs(config);
+  const std::vector<RunSpec> mine = select_shard(all, options.shard_index, options.shard_count);
+  RunnerReport report;
+  report.total = static_cast<int>(all.size());
+  report.in_shard = static_cast<int>(mine.size());
+  std::vector<const RunSpec*> todo;
+  for (const RunSpec& r : mine) {
+    if (fs::exists(run_file(study_dir, r.key)))
+      ++report.skipped;
+    else
+      todo.push_back(&r);
+  }
+
+  Recordings recordings(config.out / "recordings");
+  std::atomic<std::size_t> next{0};
+  std::mutex report_mutex;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto show_progress = [&](const std::string& last) {
+    if (!options.progress) return;
+    const int finished = report.done + report.failed;
+    const int n = static_cast<int>(todo.size());
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double eta = finished > 0 ? elapsed / finished * (n - finished) : 0.0;
+    constexpr int kWidth = 30;
+    const int filled = n > 0 ? kWidth * finished / n : kWidth;
+    std::string bar(filled, '#');
+    bar.resize(kWidth, '.');
+    char line[256];
+    std::snprintf(line, sizeof line, "\r\033[K%s [%s] %d/%d  %s  ETA %s  %s", study.name.c_str(),
+                  bar.c_str(), finished, n, format_clock(elapsed).c_str(),
+                  finished > 0 ? format_clock(eta).c_str() : "?", last.c_str());
+    std::cerr << line << std::flush;
+  };
+  show_progress("");
+  auto worker = [&] {
+    for (;;) {
+      if (options.stop && options.stop->load()) return;
+      const std::size_t k = next.fetch_add(1);
+      if (k >= todo.size()) return;
+      const RunSpec& spec = *todo[k];
+      RunContext context{config, study_dir, options.stop, &recordings};
+      try {
+        const RunOutput out = study.run(spec, context);
+        if (out.stopped) {
+          std::lock_guard lock(report_mutex);
+          report.stopped = true;
+          return;
+        }
+        store_run(study_dir, spec, out, config, study.name);
+        std::lock_guard lock(report_mutex);
+        ++report.done;
+        show_progress(spec.key);
+      } catch (const std::exception& e) {
+        std::lock_guard lock(report_mutex);
+        ++report.failed;
+        report.errors.push_back(spec.key + ": " + e.what());
+        show_progress(spec.key + " FAILED");
+      }
+    }
+  };
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
+  std::vector<std::thread> pool;
+  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (options.progress) std::cerr << "\r\033[K" << std::flush;
+  if (options.stop && options.stop->load()) report.stopped = true;
+  report.missing = write_tables(study, config);
+  return report;
+}
+
+int write_tables(const Study& study, const StudyConfig& config) {
+  const fs::path study_dir = config.out / study.name;
+  const std::vector<RunSpec> all = study.runs(config);
+  Table rows;
+  std::map<std::string, Table> tables;
+  std::vector<std::string> table_order;
+  int missing = 0;
+  for (const RunSpec& spec : all) {
+    const fs::path file = run_file(study_dir, spec.key);
+    if (!fs::exists(file)) {
+      ++missing;
+      continue;
+    }
+    Table one = parse_csv(read_text(file), file.string());
+    if (one.size() != 1) throw InputError(file.string() + ": expected one run row");
+    const std::string names = one[0].get("tables").value_or("");
+    for (std::size_t start = 0; start < names.size();) {
+      const std::size_t end = std::min(names.find(';', start), names.size());
+      const std::string name = names.substr(start, end - start);
+      start = end + 1;
+      if (name.empty()) continue;
+      const fs::path tf = table_file(study_dir, spec.key, name);
+      Table t = parse_csv(read_text(tf), tf.string());
+      if (!tables.count(name)) table_order.push_back(name);
+      auto& dst = tables[name];
+      for (Row& r : t) dst.push_back(std::move(r));
+    }
+    rows.push_back(std::move(one[0]));
+  }
+  write_text_atomic(study_dir / "runs.csv", to_csv(rows));
+  write_text_atomic(study_dir / "summary.csv", to_csv(study.summarize(rows)));
+  for (const auto& name : table_order)
+    write_text_atomic(study_dir / (name + ".csv"), to_csv(tables[name]));
+  return missing;
+}
+
+int merge_shards(const Study& study, const StudyConfig& config,
+                 const std::vector<fs::path>& shard_roots) {
+  const fs::path study_dir = config.out / study.name;
+  std::error_code ec;
+  fs::create_directories(study_dir / "runs", ec);
+  if (ec) throw InputError(study_dir.string() + ": cannot create directory: " + ec.message());
+  for (const fs::path& root : shard_roots) {
+    const fs::path runs = root / study.name / "runs";
+    if (!fs::is_directory(runs))
+      throw InputError(root.string() + ": no results of study '" + study.name + "' (" +
+                       runs.string() + " missing)");
+    if (fs::equivalent(runs, study_dir / "runs", ec)) continue;
+    for (const auto& entry : fs::directory_iterator(runs)) {
+      const fs::path name = entry.path().filename();
+      if (entry.path().extension() != ".csv" || name.string().find(".tmp.") != std::string::npos)
+        continue;
+      const fs::path dst = study_dir / "runs" / name;
+      const std::string text = read_text(entry.path());
+      if (fs::exists(dst)) {
+        // The same run in two shards: keep one, after checking it is the same run.
+        const Table a = parse_csv(text, entry.path().string());
+        const Table b = parse_csv(read_text(dst), dst.string());
+        if (!a.empty() && !b.empty() && a[0].get("key") && a[0].get("key") == b[0].get("key")) {
+          for (const auto& [col, value] : a[0].cells()) {
+            if (col.size() > 2 && (col.ends_with("_s") || col.ends_with("_ms"))) continue;
+            if (col == "commit" || col == "cpu" || col == "cores") continue;
+            if (b[0].get(col) != value)
+              throw InputError(entry.path().string() + ": differs from " + dst.string() +
+                               " in column '" + col + "'");
+          }
+        }
+        continue;
+      }
+      write_text_atomic(dst, text);
+    }
+    // Designs and recordings the shard kept for figures.
+    for (const char* sub : {"designs"}) {
+      const fs::path from = root / study.name / sub;
+      if (fs::is_directory(from))
+        fs::copy(from, study_dir / sub,
+                 fs::copy_options::recursive | fs::copy_options::skip_existing, ec);
+    }
+  }
+  return write_tables(study, config);
+}
+
+}  // namespace hrs::experiments

@@ -1,0 +1,91 @@
+#pragma once
+// The experiments runner: executes a study's runs (resumable, parallel,
+// sharded), stores each run as it finishes and writes the study's tables.
+//
+// - Resumable: a run whose file DIR/S/runs/KEY.csv exists is skipped; a run
+//   is written (atomically) only when it completed, so a killed sweep loses
+//   at most the runs in flight.
+// - Parallel: `jobs` runs at once on threads of this process.
+// - Sharded: shard i of n takes the runs whose index in the study's run list
+//   is ≡ i − 1 (mod n): deterministic, disjoint, and their union is the
+//   whole list. merge_shards() copies the shards' run files into one root
+//   and writes the tables from them.
+// - Deterministic: a run is a pure function of its parameters (designs are
+//   seeded and independent of thread counts), so a re-run writes the same
+//   rows apart from timing columns (names ending in _s or _ms) and the
+//   environment columns (commit, cpu).
+
+#include <atomic>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "experiments/study.h"
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+
+namespace hrs::experiments {
+
+//! Baseline layout sequences of design runs, keyed by (room, seed,
+//! iterations), kept on disk under DIR/recordings/ and computed once per
+//! process when missing (jobs that need the same one wait for it).
+class Recordings {
+ public:
+  explicit Recordings(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  using Layouts = std::vector<std::vector<geometry::Pose2>>;
+  //! The layouts the baseline design of `scene` planned with this seed and
+  //! iteration count; `record` computes them when they are not stored yet.
+  Layouts get(const std::string& room, std::uint64_t seed, int iterations,
+              const std::function<Layouts()>& record);
+  //! Stores layouts a caller recorded anyway (a baseline design run).
+  void put(const std::string& room, std::uint64_t seed, int iterations, const Layouts& layouts);
+
+ private:
+  std::filesystem::path path(const std::string& room, std::uint64_t seed, int iterations) const;
+  std::filesystem::path dir_;
+  std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<std::mutex>> busy_;
+};
+
+struct RunnerOptions {
+  int jobs = 1;
+  int shard_index = 1;  //!< 1-based
+  int shard_count = 1;
+  bool progress = false;  //!< progress bar and ETA on stderr
+  const std::atomic<bool>* stop = nullptr;
+};
+
+struct RunnerReport {
+  int total = 0;     //!< runs of the study
+  int in_shard = 0;  //!< of them in this shard
+  int skipped = 0;   //!< already stored
+  int done = 0;      //!< run and stored now
+  int failed = 0;
+  int missing = 0;  //!< runs of the whole study with no stored result
+  bool stopped = false;
+  std::vector<std::string> errors;  //!< "KEY: message" per failed run
+};
+
+//! The runs of shard `index` (1-based) of `count`.
+std::vector<RunSpec> select_shard(const std::vector<RunSpec>& runs, int index, int count);
+
+//! Runs the study's runs of this shard that are not stored yet, then writes
+//! its tables (write_tables).
+RunnerReport run_study(const Study& study, const StudyConfig& config,
+                       const RunnerOptions& options);
+
+//! Writes runs.csv, summary.csv and the extra tables from the stored runs.
+//! Returns how many runs of the study have no stored result.
+int write_tables(const Study& study, const StudyConfig& config);
+
+//! Copies the run files of `study` from each shard root into config.out and
+//! writes the tables. A run stored by two shards must be the same run (same
+//! parameters), else hrs::InputError.
+int merge_shards(const Study& study, const StudyConfig& config,
+                 const std::vector<std::filesystem::path>& shard_roots);
+
+//! Columns that describe the machine and code (added to every run row).
+Row environment_cells(int threads);
+
+}  // namespace hrs::experiments

@@ -1,0 +1,196 @@
+#include "experiments/table.h"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <sstream>
+
+#include "geometry/error.h"
+
+namespace hrs::experiments {
+
+void Row::set(const std::string& name, const std::string& value) {
+  for (auto& [n, v] : cells_) {
+    if (n == name) {
+      v = value;
+      return;
+    }
+  }
+  cells_.emplace_back(name, value);
+}
+
+void Row::set(const std::string& name, double value) { set(name, format_double(value)); }
+void Row::set(const std::string& name, long value) { set(name, std::to_string(value)); }
+
+void Row::merge(const Row& other) {
+  for (const auto& [n, v] : other.cells_) set(n, v);
+}
+
+std::optional<std::string> Row::get(const std::string& name) const {
+  for (const auto& [n, v] : cells_)
+    if (n == name) return v;
+  return std::nullopt;
+}
+
+std::optional<double> Row::number(const std::string& name) const {
+  const auto text = get(name);
+  if (!text || text->empty()) return std::nullopt;
+  double v = 0.0;
+  const char* b = text->data();
+  const char* e = b + text->size();
+  const auto [p, ec] = std::from_chars(b, e, v);
+  if (ec != std::errc() || p != e) return std::nullopt;
+  return v;
+}
+
+std::string format_double(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  const auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return ec == std::errc() ? std::string(buf, p) : std::string("nan");
+}
+
+std::vector<std::string> columns_of(const Table& rows) {
+  std::vector<std::string> columns;
+  std::set<std::string> seen;
+  for (const Row& r : rows)
+    for (const auto& [n, v] : r.cells())
+      if (seen.insert(n).second) columns.push_back(n);
+  return columns;
+}
+
+namespace {
+
+std::string quote(const std::string& cell) {
+  if (cell.find_first_of(",\"\n\r") == std::string::npos) return cell;
+  std::string out = "\"";
+  for (char c : cell) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string to_csv(const Table& rows) {
+  const std::vector<std::string> columns = columns_of(rows);
+  std::string out;
+  for (std::size_t i = 0; i < columns.size(); ++i) {
+    if (i) out += ',';
+    out += quote(columns[i]);
+  }
+  out += '\n';
+  for (const Row& r : rows) {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      if (i) out += ',';
+      out += quote(r.get(columns[i]).value_or(""));
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+Table parse_csv(const std::string& text, const std::string& label) {
+  std::vector<std::vector<std::string>> records;
+  std::vector<std::string> record;
+  std::string cell;
+  bool quoted = false, in_record = false;
+  long line = 1, record_line = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        if (c == '\n') ++line;
+        cell += c;
+      }
+      continue;
+    }
+    if (!in_record) {
+      in_record = true;
+      record_line = line;
+    }
+    if (c == '"' && cell.empty()) {
+      quoted = true;
+    } else if (c == ',') {
+      record.push_back(std::move(cell));
+      cell.clear();
+    } else if (c == '\n' || c == '\r') {
+      if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
+      record.push_back(std::move(cell));
+      cell.clear();
+      records.push_back(std::move(record));
+      record.clear();
+      in_record = false;
+      ++line;
+    } else {
+      cell += c;
+    }
+  }
+  if (quoted)
+    throw InputError(label + ": line " + std::to_string(record_line) + ": unbalanced quote");
+  if (in_record) {
+    record.push_back(std::move(cell));
+    records.push_back(std::move(record));
+  }
+  Table rows;
+  if (records.empty()) return rows;
+  const std::vector<std::string>& header = records.front();
+  for (std::size_t k = 1; k < records.size(); ++k) {
+    if (records[k].size() == 1 && records[k][0].empty()) continue;  // blank line
+    if (records[k].size() != header.size())
+      throw InputError(label + ": record " + std::to_string(k + 1) + " has " +
+                       std::to_string(records[k].size()) + " cells, the header " +
+                       std::to_string(header.size()));
+    Row r;
+    for (std::size_t i = 0; i < header.size(); ++i) r.set(header[i], records[k][i]);
+    rows.push_back(std::move(r));
+  }
+  return rows;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path.string() + ": cannot read file");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw InputError(path.string() + ": read error");
+  return text;
+}
+
+void write_text_atomic(const std::filesystem::path& path, const std::string& text) {
+  // Unique per process and call: jobs of one process may write the same file.
+  static std::atomic<long> counter{0};
+  const std::filesystem::path tmp = path.string() + ".tmp." +
+                                    std::to_string(static_cast<long>(::getpid())) + "." +
+                                    std::to_string(counter.fetch_add(1));
+  {
+    std::FILE* f = std::fopen(tmp.c_str(), "wb");
+    if (!f) throw InputError(path.string() + ": cannot write file");
+    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() &&
+                    std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
+    if (std::fclose(f) != 0 || !ok) {
+      std::remove(tmp.c_str());
+      throw InputError(path.string() + ": write error (disk full?)");
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::remove(tmp.c_str());
+    throw InputError(path.string() + ": cannot replace file: " + ec.message());
+  }
+}
+
+}  // namespace hrs::experiments
