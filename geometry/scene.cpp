@@ -1,4 +1,4 @@
-// Reader, validator and writer of `hrspace-scene/1` (../shared/scene-format.md).
+// Reader, validator and writer of `hrspace-scene/1` (docs/scene-format.md).
 // Every rule of the format is checked here, at the boundary, so inner code can
 // assert its preconditions. Errors name the file, the JSON pointer of the field
 // and what is wrong, on one line.

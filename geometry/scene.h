@@ -1,5 +1,5 @@
 #pragma once
-// The scene model (`hrspace-scene/1`, see ../shared/scene-format.md): plain
+// The scene model (`hrspace-scene/1`, see docs/scene-format.md): plain
 // data for the room, door, wheelchair, furniture, interior-design preferences
 // and the AO graph (paper §III-A), with its JSON reader and writer. Validation
 // of every rule of the format happens in the reader; errors are InputError
