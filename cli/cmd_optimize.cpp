@@ -4,7 +4,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -40,7 +42,7 @@ extern "C" void on_sigint(int) {
 
 constexpr const char* kDesignUsage =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
-    "                     [--planner baseline|proposed] [--reuse LIST]\n\n"
+    "                     [--planner baseline|proposed] [--reuse LIST] [--weights W]\n\n"
     "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
     "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
     "Writes DIR/layout.json (a scene file), DIR/tours.json, DIR/design.svg, DIR/report.json.\n"
@@ -49,6 +51,9 @@ constexpr const char* kDesignUsage =
     "  --iterations N  annealing iterations (default 700)\n"
     "  --designs K     number of designs (default 1)\n"
     "  --threads T     tour-planning threads (default: all cores); results do not depend on it\n"
+    "  --weights W     override the scene's weights: L,R,C (path length, rotation, clearance)\n"
+    "                  or L,R,C,D,A (and interior distance, angle); each finite and >= 0.\n"
+    "                  --weights 0,0,0 designs without the wheelchair (paper Fig. 1)\n"
     "  --planner P     baseline (default: RRT per leg, §III-B) or proposed (reuse, §V)\n"
     "  --reuse LIST    techniques of the proposed planner, for ablations: all (default),\n"
     "                  none (= baseline exactly), or a comma list of\n"
@@ -88,7 +93,8 @@ std::string format_eta(double seconds) {
 }  // namespace
 
 int cmd_design(const Argv& argv) {
-  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse"});
+  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
+                         "weights"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsage;
     return 0;
@@ -106,6 +112,15 @@ int cmd_design(const Argv& argv) {
   const std::string path = args.positional()[0];
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
+  if (const auto w = args.get("weights")) {
+    const bool five = std::count(w->begin(), w->end(), ',') == 4;
+    const std::vector<double> v = parse_numbers(*w, five ? 5 : 3, "--weights");
+    for (double x : v)
+      if (!std::isfinite(x) || x < 0.0 || x > 1e6)
+        throw InputError("--weights '" + *w + "': each weight must be finite, >= 0 and <= 1e6");
+    scene.weights.path = {v[0], v[1], v[2]};
+    if (five) scene.weights.interior = {v[3], v[4]};
+  }
 
   g_interrupted.store(false);
   struct sigaction action {};
