@@ -145,6 +145,14 @@ Row environment_cells(int threads) {
   return r;
 }
 
+bool is_timing_column(const std::string& name) {
+  return name.ends_with("_s") || name.ends_with("_ms") || name.ends_with("_share");
+}
+
+bool is_environment_column(const std::string& name) {
+  return name == "commit" || name == "cpu" || name == "cores";
+}
+
 // --- running ----------------------------------------------------------------
 
 std::vector<RunSpec> select_shard(const std::vector<RunSpec>& runs, int index, int count) {
@@ -345,8 +353,7 @@ int merge_shards(const Study& study, const StudyConfig& config,
         const Table b = parse_csv(read_text(dst), dst.string());
         if (!a.empty() && !b.empty() && a[0].get("key") && a[0].get("key") == b[0].get("key")) {
           for (const auto& [col, value] : a[0].cells()) {
-            if (col.size() > 2 && (col.ends_with("_s") || col.ends_with("_ms"))) continue;
-            if (col == "commit" || col == "cpu" || col == "cores") continue;
+            if (is_timing_column(col) || is_environment_column(col)) continue;
             if (b[0].get(col) != value)
               throw InputError(entry.path().string() + ": differs from " + dst.string() +
                                " in column '" + col + "'");

@@ -12,8 +12,8 @@
 //   and writes the tables from them.
 // - Deterministic: a run is a pure function of its parameters (designs are
 //   seeded and independent of thread counts), so a re-run writes the same
-//   rows apart from timing columns (names ending in _s or _ms) and the
-//   environment columns (commit, cpu).
+//   rows apart from timing columns (is_timing_column) and the environment
+//   columns (commit, cpu, cores).
 
 #include <atomic>
 #include <filesystem>
@@ -87,5 +87,11 @@ int merge_shards(const Study& study, const StudyConfig& config,
 
 //! Columns that describe the machine and code (added to every run row).
 Row environment_cells(int threads);
+
+//! Columns measured by the clock, which differ between re-runs: names ending
+//! in `_s` or `_ms` (times) or `_share` (ratios of times).
+bool is_timing_column(const std::string& name);
+//! Columns that describe where a run ran (commit, cpu, cores).
+bool is_environment_column(const std::string& name);
 
 }  // namespace hrs::experiments

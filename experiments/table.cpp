@@ -91,7 +91,9 @@ std::string to_csv(const Table& rows) {
   for (const Row& r : rows) {
     for (std::size_t i = 0; i < columns.size(); ++i) {
       if (i) out += ',';
-      out += quote(r.get(columns[i]).value_or(""));
+      const std::string cell = r.get(columns[i]).value_or("");
+      // A lone empty cell would read back as a blank line: quote it.
+      out += columns.size() == 1 && cell.empty() ? std::string("\"\"") : quote(cell);
     }
     out += '\n';
   }
@@ -100,7 +102,9 @@ std::string to_csv(const Table& rows) {
 
 Table parse_csv(const std::string& text, const std::string& label) {
   std::vector<std::vector<std::string>> records;
+  std::vector<bool> blank;  // the record was an empty line
   std::vector<std::string> record;
+  bool chars = false;  // the current record has consumed a character
   std::string cell;
   bool quoted = false, in_record = false;
   long line = 1, record_line = 1;
@@ -120,8 +124,10 @@ Table parse_csv(const std::string& text, const std::string& label) {
     }
     if (!in_record) {
       in_record = true;
+      chars = false;
       record_line = line;
     }
+    if (c != '\n' && c != '\r') chars = true;
     if (c == '"' && cell.empty()) {
       quoted = true;
     } else if (c == ',') {
@@ -132,6 +138,7 @@ Table parse_csv(const std::string& text, const std::string& label) {
       record.push_back(std::move(cell));
       cell.clear();
       records.push_back(std::move(record));
+      blank.push_back(!chars);
       record.clear();
       in_record = false;
       ++line;
@@ -144,12 +151,13 @@ Table parse_csv(const std::string& text, const std::string& label) {
   if (in_record) {
     record.push_back(std::move(cell));
     records.push_back(std::move(record));
+    blank.push_back(!chars);
   }
   Table rows;
   if (records.empty()) return rows;
   const std::vector<std::string>& header = records.front();
   for (std::size_t k = 1; k < records.size(); ++k) {
-    if (records[k].size() == 1 && records[k][0].empty()) continue;  // blank line
+    if (blank[k]) continue;
     if (records[k].size() != header.size())
       throw InputError(label + ": record " + std::to_string(k + 1) + " has " +
                        std::to_string(records[k].size()) + " cells, the header " +

@@ -1,0 +1,75 @@
+#!/usr/bin/env bash
+# Regenerates the paper's experiments (§VI) and figures with the harness:
+# every study (or the ones named), then the figures and REPRODUCTION.md.
+#
+#   scripts/reproduce.sh [--quick] [--out DIR] [--jobs N] [--publish] [STUDY ...]
+#
+# Studies: hrspace experiment list. Runs already stored under DIR are
+# skipped, so an interrupted reproduction resumes where it stopped.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+usage() {
+  cat <<'USAGE'
+usage: scripts/reproduce.sh [--quick] [--out DIR] [--jobs N] [--publish] [STUDY ...]
+
+Runs the studies of the experiments harness (default: all of them) into DIR
+(default out/reproduce), then draws the figures into DIR/figures and writes
+DIR/REPRODUCTION.md (the paper's claims against ours).
+
+  --quick      2 seeds, 100 iterations, the smallest sweeps (a smoke run, minutes)
+  --out DIR    output root (default out/reproduce)
+  --jobs N     designs run at once, one thread each (default 1)
+  --publish    also copy the figures, summaries and REPRODUCTION.md into
+               paper_figures/ (what README and docs embed)
+  STUDY ...    timing rs_decomposition rrt_iterations small_room ao_graph designs method
+
+Environment: HRSPACE_BIN uses that hrspace binary instead of building one.
+USAGE
+}
+
+out="$root/out/reproduce"
+jobs=1
+quick=()
+publish=()
+studies=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -h|--help) usage; exit 0 ;;
+    --quick) quick=(--quick) ;;
+    --publish) publish=(--publish) ;;
+    --out) [ $# -ge 2 ] || { echo "reproduce.sh: --out needs a directory" >&2; exit 2; }; out="$2"; shift ;;
+    --out=*) out="${1#--out=}" ;;
+    --jobs) [ $# -ge 2 ] || { echo "reproduce.sh: --jobs needs a number" >&2; exit 2; }; jobs="$2"; shift ;;
+    --jobs=*) jobs="${1#--jobs=}" ;;
+    -*) echo "reproduce.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
+    *) studies+=("$1") ;;
+  esac
+  shift
+done
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "reproduce.sh: --jobs '$jobs': expected a whole number >= 1" >&2; exit 2; }
+[ ${#studies[@]} -gt 0 ] || studies=(all)
+
+if [ -n "${HRSPACE_BIN:-}" ]; then
+  bin="$HRSPACE_BIN"
+else
+  "$root/scripts/build.sh" hrspace
+  bin="$root/build/cli/hrspace"
+fi
+python=/usr/bin/python3
+"$python" -c "import matplotlib" 2>/dev/null || "$root/scripts/setup.sh"
+
+commit="$(git -C "$root" rev-parse --short=12 HEAD 2>/dev/null || echo unknown)"
+if [ -n "$(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null)" ]; then commit="$commit-dirty"; fi
+export HRSPACE_COMMIT="$commit"
+
+start=$(date +%s)
+command="scripts/reproduce.sh${quick:+ ${quick[*]}} --jobs $jobs${studies:+ ${studies[*]}}"
+status=0
+for s in "${studies[@]}"; do
+  "$bin" experiment "$s" --out "$out" --jobs "$jobs" "${quick[@]}" || { status=$?; break; }
+done
+"$python" "$root/paper_figures/plot.py" "$out" --command "$command" "${publish[@]}"
+end=$(date +%s)
+echo "reproduce.sh: $((end - start)) s wall time on $(nproc) cores; outputs in $out"
+exit $status
