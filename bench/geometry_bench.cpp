@@ -1,6 +1,6 @@
 // Geometry micro-benchmarks on the bedroom scene: point query, straight and
 // arc checks, and the incremental update after one object translates or
-// rotates (DESIGN.md "Performance"). Run:
+// rotates (docs/design-notes.md "Performance"). Run:
 //   build/bench/geometry_bench --benchmark_min_time=0.5
 
 #include <benchmark/benchmark.h>

@@ -1,5 +1,5 @@
 // hrspace: the command-line entry point. Dispatches to the subcommands of
-// DESIGN.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
+// docs/design-notes.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
 
 #include <cstdio>
 #include <exception>

@@ -1,6 +1,6 @@
 #pragma once
 // Exact, conservative configuration space of the wheelchair among furniture
-// and walls (DESIGN.md "Exact, conservative collision"; the paper's planner,
+// and walls (docs/design-notes.md "Exact, conservative collision"; the paper's planner,
 // §III-B, needs these collision checks for every RRT edge).
 //
 // The heading circle is cut into K slices. For each slice, the footprint swept

@@ -1,5 +1,5 @@
 #pragma once
-// The cost of a layout (paper §III-D, DESIGN.md "Costs"):
+// The cost of a layout (paper §III-D, docs/design-notes.md "Costs"):
 //   C_total = Σ_s L̂(s) · Σ_legs α̂_end · (w_l·length + w_r·rotation + w_c·clearance)
 //           + w_l · (penalty of unfound tours)
 //           + w_I,d · C_I^d + w_I,r · C_I^r.

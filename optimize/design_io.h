@@ -1,5 +1,5 @@
 #pragma once
-// The files of one design (DESIGN.md "Output shapes"): layout.json (a valid
+// The files of one design (docs/design-notes.md "Output shapes"): layout.json (a valid
 // scene with the optimized poses), tours.json (the M tours of the best
 // layout), design.svg (room, door and its clear zone, objects with names and
 // a front mark, the most likely tour bold and the others faint, a scale bar)

@@ -1,6 +1,6 @@
 #pragma once
 // A small fixed pool of worker threads for the M tours of one annealing
-// iteration (paper §III-E plans M = 10 tours per layout; DESIGN.md wants them
+// iteration (paper §III-E plans M = 10 tours per layout; docs/design-notes.md wants them
 // in parallel). run(n, fn) calls fn(0) … fn(n−1) once each, spread over the
 // workers and the calling thread, and returns when all are done. Work items
 // must write only their own outputs; then results do not depend on the

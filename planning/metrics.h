@@ -1,5 +1,5 @@
 #pragma once
-// Path metrics that the path cost of §III-D is built from (DESIGN.md
+// Path metrics that the path cost of §III-D is built from (docs/design-notes.md
 // "Costs"): length, rotation (sum of wrapped heading changes between
 // consecutive waypoints) and clearance (corridor width left + right of each
 // waypoint, through CSpace::clearance). Turning these into a cost is the
@@ -15,7 +15,7 @@ namespace hrs::planning {
 
 //! Waypoint spacing used for tours and the `plan` output (5 cm).
 inline constexpr double kWaypointStep = 0.05;
-//! ADA clear width (metres), the reference corridor width of DESIGN.md.
+//! ADA clear width (metres), the reference corridor width of docs/design-notes.md.
 inline constexpr double kReferenceWidth = 0.915;
 
 struct PathMetrics {

@@ -10,7 +10,7 @@
 // §V-C: RRT trees rooted at goal poses, kept while their root barely moves,
 // pruned of edges a move invalidated, rebuilt past 30 nodes.
 //
-// Determinism (DESIGN.md: the same seed gives the same bytes for any thread
+// Determinism (docs/design-notes.md: the same seed gives the same bytes for any thread
 // count): ReusePlanner serves legs through TourHooks::provider. Between
 // begin_iteration() and end_iteration() the database and the tree store are
 // read-only snapshots; every leg's outcome is a pure function of (snapshot,

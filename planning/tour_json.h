@@ -1,5 +1,5 @@
 #pragma once
-// JSON text of legs and tours in the shapes of DESIGN.md "Output shapes"
+// JSON text of legs and tours in the shapes of docs/design-notes.md "Output shapes"
 // (the `plan` object and the entries of tours.json). Field names there are
 // fixed; extra fields are added. nlohmann_json stays inside the .cpp.
 

@@ -3,7 +3,7 @@
 // door, every stop is one of the object's goal poses, faces the object's
 // centre and lies on an allowed side; paths are free by the exact reference;
 // waypoints and metrics agree with the paths. Also the JSON shapes of
-// DESIGN.md "Output shapes" and determinism from the seed.
+// docs/design-notes.md "Output shapes" and determinism from the seed.
 
 #include <gtest/gtest.h>
 
