@@ -154,6 +154,11 @@ int cmd_experiment(const Argv& argv) {
     }
     std::cout.flush();
     if (!std::cout) throw std::runtime_error("write error on standard output");
+    if (missing) {
+      std::cerr << "hrspace experiment merge: " << missing
+                << " run(s) have no stored result in any shard\n";
+      return 1;
+    }
     return 0;
   }
 

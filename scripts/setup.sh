@@ -8,6 +8,7 @@ packages=(
   libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libompl-dev
   python3 python3-matplotlib
+  slurm-wlm slurm-client munge
 )
 
 missing=()
