@@ -1,9 +1,13 @@
 #pragma once
-// Plain 2-D value types shared by every module: points, poses, angle wrapping.
-// Angles are radians, counter-clockwise from world +x (scene-format.md).
+// Plain 2-D value types shared by every module: points, poses, angle
+// wrapping, pose algebra (frames, gaps) and bounding boxes.
+// Angles are radians, counter-clockwise from world +x (docs/scene-format.md).
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <vector>
 
 namespace hrs::geometry {
 
@@ -67,5 +71,36 @@ inline Vec2 rotate(Vec2 v, double a) {
 
 //! Maps a point from the frame of `p` to the world.
 inline Vec2 to_world(const Pose2& p, Vec2 local) { return p.position() + rotate(local, p.theta); }
+
+//! Axis-aligned bounding box.
+struct Box {
+  double xmin, ymin, xmax, ymax;
+};
+
+//! Bounding box of points (inverted, +inf/−inf, when there are none).
+inline Box bounding_box(const std::vector<Vec2>& points) {
+  Box b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (const Vec2& v : points) {
+    b.xmin = std::min(b.xmin, v.x);
+    b.ymin = std::min(b.ymin, v.y);
+    b.xmax = std::max(b.xmax, v.x);
+    b.ymax = std::max(b.ymax, v.y);
+  }
+  return b;
+}
+
+//! `b` in the frame of `a` (a's position at the origin, heading +x).
+inline Pose2 relative_pose(const Pose2& a, const Pose2& b) {
+  const double c = std::cos(a.theta), s = std::sin(a.theta);
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return {c * dx + s * dy, -s * dx + c * dy, wrap_angle(b.theta - a.theta)};
+}
+
+//! Distance (metres) plus absolute heading difference (radians): the one
+//! pose gap of tolerances and matches.
+inline double pose_gap(const Pose2& a, const Pose2& b) {
+  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(wrap_angle(a.theta - b.theta));
+}
 
 }  // namespace hrs::geometry

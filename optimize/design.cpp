@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "geometry/polygon_ops.h"
+#include "geometry/random.h"
 #include "optimize/thread_pool.h"
 #include "planning/motion_validator.h"
 
@@ -22,12 +23,6 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
 }  // namespace
 

@@ -12,36 +12,13 @@
 #include <stdexcept>
 
 #include "geometry/error.h"
+#include "geometry/polygon_ops.h"
+#include "geometry/random.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
 
 namespace {
-
-double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-std::uint64_t splitmix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-struct Box {
-  double xmin, ymin, xmax, ymax;
-};
-
-Box room_box(const geometry::Scene& scene) {
-  Box b{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-        -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-  for (const geometry::Vec2& v : scene.room.polygon) {
-    b.xmin = std::min(b.xmin, v.x);
-    b.ymin = std::min(b.ymin, v.y);
-    b.xmax = std::max(b.xmax, v.x);
-    b.ymax = std::max(b.ymax, v.y);
-  }
-  return b;
-}
 
 void add_stats(LegStats& into, const LegStats& more) {
   into.iterations += more.iterations;
@@ -51,271 +28,6 @@ void add_stats(LegStats& into, const LegStats& more) {
 }
 
 }  // namespace
-
-// ---- ReuseOptions -----------------------------------------------------------
-
-const std::array<ReuseOptions::Technique, 11>& ReuseOptions::techniques() {
-  static const std::array<Technique, 11> list{{{"samples", &ReuseOptions::samples},
-                                               {"steering", &ReuseOptions::steering},
-                                               {"paths", &ReuseOptions::paths},
-                                               {"trees", &ReuseOptions::trees},
-                                               {"failures", &ReuseOptions::failures},
-                                               {"shortcuts", &ReuseOptions::shortcuts},
-                                               {"budget", &ReuseOptions::budget},
-                                               {"metrics", &ReuseOptions::metrics},
-                                               {"backoff", &ReuseOptions::backoff},
-                                               {"speculate", &ReuseOptions::speculate},
-                                               {"proofs", &ReuseOptions::proofs}}};
-  return list;
-}
-
-const std::array<ReuseOptions::Parameter, 2>& ReuseOptions::parameters() {
-  static const std::array<Parameter, 2> list{
-      {{"budget", &ReuseOptions::budget, &ReuseOptions::budget_iterations, "RRT iterations"},
-       {"backoff", &ReuseOptions::backoff, &ReuseOptions::backoff_floor, "RRT iterations"}}};
-  return list;
-}
-
-bool ReuseOptions::any() const {
-  return std::ranges::any_of(techniques(), [this](const Technique& t) { return this->*t.on; });
-}
-
-ReuseOptions ReuseOptions::none() {
-  ReuseOptions o;
-  for (const Technique& t : techniques()) o.*t.on = false;
-  return o;
-}
-
-ReuseOptions ReuseOptions::parse(std::string_view list) {
-  ReuseOptions o = none();
-  if (list == "none") return o;
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    const std::size_t end = std::min(list.find(',', start), list.size());
-    const std::string_view item = list.substr(start, end - start);
-    const bool off = item.starts_with('-');
-    const std::string_view name = off ? item.substr(1) : item;
-    const auto t =
-        std::ranges::find_if(techniques(), [name](const Technique& x) { return name == x.name; });
-    const std::size_t eq = name.find('=');
-    const auto p = std::ranges::find_if(parameters(), [&](const Parameter& x) {
-      return eq != std::string_view::npos && name.substr(0, eq) == x.technique;
-    });
-    if (!off && p != parameters().end()) {
-      const std::string digits(name.substr(eq + 1));
-      char* stop = nullptr;
-      const long n = std::strtol(digits.c_str(), &stop, 10);
-      if (digits.empty() || *stop != '\0' || n < 1 || n > 1'000'000)
-        throw InputError("--reuse: '" + std::string(name) + "': " + p->technique +
-                         "=N needs a whole number of " + p->unit + " in 1..1000000");
-      o.*p->on = true;
-      o.*p->value = static_cast<int>(n);
-    } else if (name == "all" && !off) {
-      const ReuseOptions d;  // every technique that is on by default
-      for (const Technique& x : techniques()) o.*x.on = o.*x.on || d.*x.on;
-    } else if (t != techniques().end()) {
-      o.*t->on = !off;
-    } else {
-      std::string known;
-      for (const Technique& x : techniques()) known.append(", ").append(x.name);
-      for (const Parameter& x : parameters()) known.append(", ").append(x.technique).append("=N");
-      throw InputError("--reuse: unknown technique '" + std::string(item) +
-                       "' (all, none, or a comma list of all" + known +
-                       "; -NAME turns one off, e.g. all,-budget)");
-    }
-    start = end + 1;
-  }
-  return o;
-}
-
-std::string ReuseOptions::names() const {
-  std::string out;
-  for (const Technique& t : techniques()) {
-    if (!(this->*t.on)) continue;
-    if (!out.empty()) out += ',';
-    out += t.name;
-    for (const Parameter& x : parameters()) {
-      if (t.on == x.on && this->*x.value != ReuseOptions{}.*x.value)
-        out.append("=").append(std::to_string(this->*x.value));
-    }
-  }
-  return out.empty() ? "none" : out;
-}
-
-// ---- §V-A -------------------------------------------------------------------
-
-DecompositionSampler::DecompositionSampler(const rs::Decomposition& decomposition,
-                                           const geometry::Scene& scene)
-    : decomposition_(&decomposition) {
-  const Box b = room_box(scene);
-  cx_ = 0.5 * (b.xmin + b.xmax);
-  cy_ = 0.5 * (b.ymin + b.ymax);
-  // The decomposition samples x in [−W, W] for a room of width W (doubled
-  // room, start at its centre): halve to land in the room's box.
-  const auto& o = decomposition.options();
-  sx_ = o.room_width > 0.0 ? 0.5 * (b.xmax - b.xmin) / o.room_width : 0.0;
-  sy_ = o.room_depth > 0.0 ? 0.5 * (b.ymax - b.ymin) / o.room_depth : 0.0;
-}
-
-Pose2 DecompositionSampler::sample(std::mt19937_64& rng) {
-  const auto& samples = decomposition_->samples();
-  const std::size_t n = samples.size();
-  const std::size_t i =
-      std::min(n - 1, static_cast<std::size_t>(unit(rng) * static_cast<double>(n)));
-  const Pose2& p = samples[i].pose;
-  return {cx_ + sx_ * p.x, cy_ + sy_ * p.y, p.theta};
-}
-
-double DecompositionSteering::distance(const Pose2& from, const Pose2& to, double radius) {
-  const double d = decomposition_->predicted_length(from, to);
-  return std::isfinite(d) ? d : rs::shortest_length(from, to, radius);
-}
-
-rs::Path DecompositionSteering::path(const Pose2& from, const Pose2& to, double radius) {
-  if (auto p = decomposition_->predicted_path(from, to)) return *std::move(p);
-  return rs::shortest_path(from, to, radius);
-}
-
-// ---- §V-B -------------------------------------------------------------------
-
-rs::Path shorten_path(const Pose2& start, const rs::Path& path, MotionValidator& validator,
-                      double step) {
-  // Poses along the path and their arc lengths.
-  std::vector<Pose2> pose{start};
-  std::vector<double> at{0.0};
-  Pose2 p = start;
-  double s = 0.0;
-  for (const rs::Segment& seg : path.segments) {
-    const auto [pieces, part] = cut_segment(seg, step);
-    for (int i = 0; i < pieces; ++i) {
-      p = rs::advance(p, part, path.radius);
-      s += part.length;
-      pose.push_back(p);
-      at.push_back(s);
-    }
-  }
-  const int n = static_cast<int>(pose.size()) - 1;
-  if (n < 2) return path;
-  rs::Path out{{}, path.radius};
-  int i = 0;
-  while (i < n) {
-    int next = i + 1;
-    rs::Path piece = subpath(path, at[i], at[i + 1]);
-    for (int j = n; j > i + 1; j = i + (j - i) / 2) {
-      rs::Path direct = rs::shortest_path(pose[i], pose[j], path.radius);
-      if (direct.length() < at[j] - at[i] - 1e-3 && validator.path_free(pose[i], direct)) {
-        next = j;
-        piece = std::move(direct);
-        break;
-      }
-    }
-    for (const rs::Segment& seg : piece.segments) append_segment(out.segments, seg);
-    i = next;
-  }
-  return out;
-}
-
-Pose2 relative_pose(const Pose2& a, const Pose2& b) {
-  const double c = std::cos(a.theta), s = std::sin(a.theta);
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  return {c * dx + s * dy, -s * dx + c * dy, geometry::wrap_angle(b.theta - a.theta)};
-}
-
-double pose_gap(const Pose2& a, const Pose2& b) {
-  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(geometry::wrap_angle(a.theta - b.theta));
-}
-
-const PathDatabase::Entry* PathDatabase::find(const LegKey& key) const {
-  const auto it = entries_.find(key);
-  return it == entries_.end() ? nullptr : &it->second;
-}
-
-std::optional<rs::Path> PathDatabase::transformed(const LegKey& key, const Pose2& from,
-                                                  const Pose2& to) const {
-  const Entry* e = find(key);
-  if (!e) return std::nullopt;
-  if (pose_gap(relative_pose(e->from, e->to), relative_pose(from, to)) > kRigidTolerance)
-    return std::nullopt;
-  return e->path;  // segments are intrinsic: driven from `from` they end at `to`
-}
-
-void PathDatabase::put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path,
-                       std::vector<Pose2> checked) {
-  Entry e{path, from, to, std::move(checked), {}};
-  if (!e.checked.empty())
-    for (const Pose2& p : rs::sample(from, path, kTraceStep)) e.trace.push_back(p.position());
-  entries_[key] = std::move(e);
-}
-
-bool PathDatabase::lookup(const LegKey& key, const Pose2& from, const Pose2& to, rs::Path& out) {
-  auto p = transformed(key, from, to);
-  if (!p) return false;
-  out = *std::move(p);
-  return true;
-}
-
-void PathDatabase::store(const LegKey& key, const Pose2& from, const Pose2& to,
-                         const rs::Path& path) {
-  put(key, from, to, path);
-}
-
-// ---- §V-C -------------------------------------------------------------------
-
-std::optional<RrtTree> TreeStore::usable(const RootKey& root, const Pose2& from,
-                                         std::uint64_t* checks) const {
-  const auto it = trees_.find(root);
-  if (it == trees_.end() || it->second.nodes.empty()) return std::nullopt;
-  const RrtTree& stored = it->second;
-  if (static_cast<int>(stored.nodes.size()) > options_.tree_max_nodes) return std::nullopt;
-  if (pose_gap(stored.root(), from) > options_.tree_root_tolerance) return std::nullopt;
-
-  // Move the tree rigidly with its root (nodes re-driven along their edges),
-  // then keep the nodes whose whole chain of edges is still free. Parents
-  // precede their children, so one forward pass suffices.
-  MotionValidator validator(*cspace_, radius_);
-  const std::size_t n = stored.nodes.size();
-  std::vector<Pose2> pose(n);
-  std::vector<std::int32_t> remap(n, -1);
-  RrtTree out;
-  out.nodes.reserve(n);
-  pose[0] = from;
-  remap[0] = 0;
-  out.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  for (std::size_t i = 1; i < n; ++i) {
-    const RrtTree::Node& node = stored.nodes[i];
-    const std::int32_t parent = remap[node.parent];
-    if (parent < 0) continue;
-    const Pose2 start = pose[node.parent];
-    if (!validator.path_free(start, node.edge)) continue;
-    pose[i] = final_pose(start, node.edge);
-    remap[i] = static_cast<std::int32_t>(out.nodes.size());
-    out.nodes.push_back({pose[i], parent, node.edge, node.cost});
-  }
-  if (checks) *checks += validator.checks();
-  return out;
-}
-
-void TreeStore::put(const RootKey& root, RrtTree tree) {
-  if (tree.nodes.empty() || static_cast<int>(tree.nodes.size()) > options_.tree_max_nodes) {
-    trees_.erase(root);
-    return;
-  }
-  trees_[root] = std::move(tree);
-}
-
-RrtTree* TreeStore::tree_for(const LegKey& key, const Pose2& from) {
-  const RootKey root{key.from_object, key.from_slot};
-  std::optional<RrtTree> tree = usable(root, from);
-  if (!tree) {
-    tree.emplace();
-    tree->nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  }
-  RrtTree& slot = trees_[root];
-  slot = *std::move(tree);
-  return &slot;
-}
-
-// ---- ReusePlanner ---------------------------------------------------------------
 
 ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
   legs_database += o.legs_database;
@@ -377,14 +89,14 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
   reach_ = tour.planner.step_length +
            0.5 * std::hypot(scene.wheelchair.length, scene.wheelchair.width) + 0.05;
   if (options_.samples || options_.steering) {
-    const Box b = room_box(scene);
+    const geometry::Box b = geometry::bounding_box(scene.room.polygon);
     rs::DecompositionOptions d;
     d.radius = radius_;
     d.room_width = b.xmax - b.xmin;
     d.room_depth = b.ymax - b.ymin;
     d.initial_samples = options_.decomposition_initial;
     d.stop_after = options_.decomposition_stop;
-    std::mt19937_64 rng(splitmix(seed ^ 0x5eed'dec0'0000'0000ULL));
+    std::mt19937_64 rng(splitmix64(seed ^ 0x5eed'dec0'0000'0000ULL));
     decomposition_ = std::make_unique<rs::Decomposition>(d, rng);
     if (options_.samples) sampler_ = std::make_unique<DecompositionSampler>(*decomposition_, scene);
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
@@ -610,7 +322,7 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     out.stats.time_ms += slot.proof_ms;
     if (!slot.proven) {
       // Not proven: the rest of the budget, growing the same tree.
-      r = planner.plan(from, to, splitmix(seed), tree, budget - options_.proof_after);
+      r = planner.plan(from, to, splitmix64(seed), tree, budget - options_.proof_after);
       add_stats(out.stats, r.stats);
       slot.fresh_iterations += r.stats.iterations;
     }

@@ -6,19 +6,15 @@
 #include <limits>
 #include <numbers>
 
+#include "geometry/random.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
 
 namespace {
 
-//! Uniform double in [0, 1) from the top 53 bits: identical on every
-//! standard library (std::uniform_real_distribution is not).
-double unit(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
-double pose_gap(const Pose2& a, const Pose2& b) {
-  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(geometry::wrap_angle(a.theta - b.theta));
-}
+double unit(std::mt19937_64& rng) { return uniform01(rng); }
+using geometry::pose_gap;
 
 }  // namespace
 
@@ -34,15 +30,8 @@ rs::Path RrtTree::path_to(std::int32_t index, double radius) const {
 }
 
 UniformSampler UniformSampler::for_room(const geometry::Scene& scene) {
-  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
-  double xmax = -xmin, ymax = -xmin;
-  for (const geometry::Vec2& v : scene.room.polygon) {
-    xmin = std::min(xmin, v.x);
-    ymin = std::min(ymin, v.y);
-    xmax = std::max(xmax, v.x);
-    ymax = std::max(ymax, v.y);
-  }
-  return UniformSampler(xmin, ymin, xmax, ymax);
+  const geometry::Box b = geometry::bounding_box(scene.room.polygon);
+  return UniformSampler(b.xmin, b.ymin, b.xmax, b.ymax);
 }
 
 Pose2 UniformSampler::sample(std::mt19937_64& rng) {

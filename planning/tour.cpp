@@ -8,29 +8,21 @@
 
 #include "geometry/error.h"
 #include "planning/leg_measures.h"
+#include "geometry/random.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
 
 namespace {
 
-std::uint64_t splitmix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
 
-double pose_gap(const Pose2& a, const Pose2& b) {
-  return std::hypot(a.x - b.x, a.y - b.y) + std::abs(geometry::wrap_angle(a.theta - b.theta));
-}
 
 }  // namespace
 
 std::uint64_t leg_seed(std::uint64_t tour_seed, const LegKey& key) {
-  std::uint64_t h = splitmix(tour_seed);
+  std::uint64_t h = splitmix64(tour_seed);
   for (int v : {key.from_object, key.to_object, key.from_slot, key.to_slot}) {
-    h = splitmix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
+    h = splitmix64(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(v)));
   }
   return h;
 }
@@ -174,22 +166,6 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
       if (source == LegSource::kReused) ++tour.stats.legs_reused;
       if (source == LegSource::kRepaired) ++tour.stats.legs_repaired;
       path = std::move(outcome.path);
-    } else if (hooks_.legs) {
-      rs::Path cached;
-      if (hooks_.legs->lookup(key, from, to, cached)) {
-        const bool valid =
-            std::abs(cached.radius - radius) <= 1e-12 &&
-            pose_gap(final_pose(from, cached), to) <= options_.planner.goal_tolerance &&
-            validator_.path_free(from, cached);
-        if (valid) {
-          path = std::move(cached);
-          source = LegSource::kReused;
-          ++tour.stats.legs_reused;
-        } else {
-          hooks_.legs->reject(key);
-          ++tour.stats.legs_rejected;
-        }
-      }
     }
     if (!path) {
       if (tour.stats.legs_planned >= options_.max_leg_plans) {
@@ -198,9 +174,7 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
       }
       ++tour.stats.legs_planned;
       const std::uint64_t seed = leg_seed(seed_, key);
-      RrtTree* tree = hooks_.trees ? hooks_.trees->tree_for(key, from) : nullptr;
-      LegResult result =
-          tree ? planner_.plan(from, to, seed, *tree) : planner_.plan(from, to, seed);
+      LegResult result = planner_.plan(from, to, seed);
       stats = result.stats;
       tour.stats.rrt_iterations += static_cast<std::uint64_t>(result.stats.iterations);
       tour.stats.collision_checks += result.stats.collision_checks;
@@ -208,7 +182,6 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
         ++tour.stats.legs_failed;
         continue;
       }
-      if (hooks_.legs) hooks_.legs->store(key, from, to, result.path);
       path = std::move(result.path);
     }
 

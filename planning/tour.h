@@ -10,13 +10,10 @@
 // (start pose, goal pose) is planned at most once per tour, and documented
 // caps bound the effort of an impossible tour.
 //
-// Reuse hooks for the proposed planner (§V): a LegCache (path database,
-// §V-B) is consulted before each leg is planned, and every path it returns is
-// re-validated here with the continuous checks, so a stale path is never
-// returned; a TreeCache (§V-C) may hand the leg planner a tree to grow. For
-// tours planned in parallel, a LegProvider (planning/reuse.h) instead answers
-// whole legs, each a pure function of its inputs, so that the tours agree
-// whatever thread planned a shared leg first. The baseline passes no hooks.
+// Reuse hooks for the proposed planner (§V): a LegProvider (planning/reuse.h)
+// answers whole legs (path database, tree reuse, failure memory), each a pure
+// function of its inputs, so that tours planned in parallel agree whatever
+// thread planned a shared leg first. The baseline passes no hooks.
 // Hooks are shared by the caller's choice and must then be thread-safe.
 //
 // Thread-safety: a TourPlanner reads the CSpace (shared, const) and keeps all
@@ -68,29 +65,6 @@ struct LegKey {
   friend auto operator<=>(const LegKey&, const LegKey&) = default;
 };
 
-//! Path database hook (§V-B). lookup() may return any path: the tour planner
-//! validates it (ends at the poses, free in the current layout) and calls
-//! reject() when it is not valid.
-class LegCache {
- public:
-  virtual ~LegCache() = default;
-  //! A candidate path from `from` to `to`, or false.
-  virtual bool lookup(const LegKey& key, const Pose2& from, const Pose2& to, rs::Path& out) = 0;
-  //! A path the planner found (valid in the current layout).
-  virtual void store(const LegKey& key, const Pose2& from, const Pose2& to,
-                     const rs::Path& path) = 0;
-  //! The path returned by lookup() for `key` was invalid now.
-  virtual void reject(const LegKey& key) = 0;
-};
-
-//! RRT tree reuse hook (§V-C): a tree rooted at `from` to grow, or nullptr
-//! for a fresh one. The cache owns the tree and has pruned invalid parts.
-class TreeCache {
- public:
-  virtual ~TreeCache() = default;
-  virtual RrtTree* tree_for(const LegKey& key, const Pose2& from) = 0;
-};
-
 //! How a leg's path was obtained.
 enum class LegSource {
   kPlanned,   //!< an RRT query from scratch (or from a reused tree)
@@ -139,10 +113,9 @@ class LegProvider {
 class LegMeasures;
 
 struct TourHooks {
-  LegCache* legs = nullptr;    //!< null: no path database (baseline)
-  TreeCache* trees = nullptr;  //!< null: a fresh tree per leg (baseline)
-  PlannerHooks planner;        //!< sampler / steering of the leg planner
-  //! Non-null: legs come from here and `legs` / `trees` are not used.
+  PlannerHooks planner;  //!< sampler / steering of the leg planner
+  //! Non-null: legs come from here (the proposed planner); null: every leg
+  //! is planned by the tour's own RRT (the baseline).
   LegProvider* provider = nullptr;
   //! Non-null: found legs are measured through it (same results, work kept
   //! across tours and layouts: planning/leg_measures.h); null: afresh.
@@ -163,7 +136,7 @@ struct Leg {
 struct TourStats {
   int legs_planned = 0;   //!< RRT queries run
   int legs_failed = 0;    //!< of which found nothing
-  int legs_reused = 0;    //!< paths taken from the LegCache / provider's database
+  int legs_reused = 0;    //!< paths taken from the provider's database
   int legs_repaired = 0;  //!< stored paths repaired by the provider (also in legs_planned)
   int legs_rejected = 0;  //!< stored paths invalid in the current layout
   int backtracks = 0;     //!< returns to an earlier leg

@@ -164,7 +164,7 @@ TEST(PathDatabase, PathBetweenRigidlyMovedObjectsEndsAtTheNewPosesAndIsFree) {
           const LegResult r = planner.plan(from.pose, to.pose, rng());
           if (!r.found) continue;
           const LegKey key{static_cast<int>(a), static_cast<int>(b), from.slot, to.slot};
-          db.store(key, from.pose, to.pose, r.path);
+          db.put(key, from.pose, to.pose, r.path);
           // Goal poses of the moved objects: the same slots, moved rigidly.
           const auto ma = goal_poses(moved, moved.objects[a], moved.objects[a].pose, moved_cspace);
           const auto mb = goal_poses(moved, moved.objects[b], moved.objects[b].pose, moved_cspace);
@@ -177,13 +177,14 @@ TEST(PathDatabase, PathBetweenRigidlyMovedObjectsEndsAtTheNewPosesAndIsFree) {
             if (g.slot == to.slot) {
               EXPECT_LE(testing::pose_error(g.pose, new_to), 1e-9);
             }
-          rs::Path path;
-          ASSERT_TRUE(db.lookup(key, new_from, new_to, path));
+          const std::optional<rs::Path> found = db.transformed(key, new_from, new_to);
+          ASSERT_TRUE(found.has_value());
+          const rs::Path& path = *found;
           EXPECT_LE(testing::pose_error(final_pose(new_from, path), new_to), 1e-9);
           testing::expect_valid_path(reference, new_from, new_to, path, radius,
                                      file + std::string(" transformed leg"));
           // Only one end moved: not rigid, so the database does not pretend.
-          EXPECT_FALSE(db.lookup(key, new_from, apply({0.05, 0.0, 0.0}, new_to), path));
+          EXPECT_FALSE(db.transformed(key, new_from, apply({0.05, 0.0, 0.0}, new_to)).has_value());
           ++stored;
           ++checked;
         }
