@@ -112,6 +112,7 @@ int cmd_design(const Argv& argv) {
   const std::string path = args.positional()[0];
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
+  geometry::require_sequences(scene, path == "-" ? "stdin" : path);
   if (const auto w = args.get("weights")) {
     const bool five = std::count(w->begin(), w->end(), ',') == 4;
     const std::vector<double> v = parse_numbers(*w, five ? 5 : 3, "--weights");
