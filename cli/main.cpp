@@ -1,7 +1,9 @@
 // hrspace: the command-line entry point. Dispatches to the subcommands of
 // DESIGN.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -56,11 +58,27 @@ int main(int argc, char** argv) {
   for (const auto& c : kCommands) {
     if (name != c.name) continue;
     try {
-      return c.run(args);
+      const int status = c.run(args);
+      // A write error on stdout (a full device, a closed file) must not pass
+      // as success: flush both streams and check them.
+      std::cout.flush();
+      const bool cout_failed = !std::cout;
+      errno = 0;
+      if (std::fflush(stdout) != 0 || std::ferror(stdout) || cout_failed) {
+        const int err = errno;
+        std::cerr << "hrspace " << name << ": cannot write to standard output"
+                  << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+        return 1;
+      }
+      return status;
     } catch (const hrs::InputError& e) {
       std::cout.flush();
       std::cerr << "hrspace " << name << ": " << e.what() << "\n";
       return 2;
+    } catch (const hrs::OutputError& e) {
+      std::cout.flush();
+      std::cerr << "hrspace " << name << ": " << e.what() << "\n";
+      return 1;
     } catch (const std::exception& e) {
       std::cout.flush();
       std::cerr << "hrspace " << name << ": internal error: " << e.what() << "\n";
