@@ -41,6 +41,21 @@ void usage(std::ostream& out) {
   }
 }
 
+//! Flushes stdout and checks it: a write error (a full device, a closed
+//! file) must not pass as success. Returns `status`, or 1 after a message.
+int checked_output(const std::string& name, int status) {
+  std::cout.flush();
+  const bool cout_failed = !std::cout;
+  errno = 0;
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) || cout_failed) {
+    const int err = errno;
+    std::cerr << "hrspace " << name << ": cannot write to standard output"
+              << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+    return 1;
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -52,25 +67,13 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     usage(std::cout);
-    return 0;
+    return checked_output(name, 0);
   }
   const hrs::cli::Argv args(argv + 2, argv + argc);
   for (const auto& c : kCommands) {
     if (name != c.name) continue;
     try {
-      const int status = c.run(args);
-      // A write error on stdout (a full device, a closed file) must not pass
-      // as success: flush both streams and check them.
-      std::cout.flush();
-      const bool cout_failed = !std::cout;
-      errno = 0;
-      if (std::fflush(stdout) != 0 || std::ferror(stdout) || cout_failed) {
-        const int err = errno;
-        std::cerr << "hrspace " << name << ": cannot write to standard output"
-                  << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
-        return 1;
-      }
-      return status;
+      return checked_output(name, c.run(args));
     } catch (const hrs::InputError& e) {
       std::cout.flush();
       std::cerr << "hrspace " << name << ": " << e.what() << "\n";
