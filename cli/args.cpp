@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <iterator>
@@ -113,14 +114,32 @@ std::string format_number(double v) {
 
 std::string read_input(const std::string& path) {
   if (path == "-") {
-    return std::string(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    std::string text(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>{});
+    if (std::cin.bad()) throw InputError("stdin: read error");
+    return text;
   }
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (!in) throw InputError(path + ": cannot open file (missing or unreadable)");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw InputError(path + ": cannot read file");
+  return buffer.str();
 }
 
-std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::size_t columns,
+namespace {
+
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string::npos) return "";
+  return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+}  // namespace
+
+std::vector<std::vector<double>> read_numeric_csv(const std::string& text,
+                                                  const std::vector<CsvColumn>& columns,
                                                   const std::string& label) {
   std::vector<std::vector<double>> rows;
   std::stringstream ss(text);
@@ -136,20 +155,30 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::
     std::string f;
     while (std::getline(ls, f, ',')) fields.push_back(f);
     if (!line.empty() && line.back() == ',') fields.push_back("");
-    double d;
-    if (first && !fields.empty() && !to_double(fields[0], d)) {
-      first = false;  // header row
-      continue;
+    const std::string at = label + ": line " + std::to_string(line_no);
+    if (first) {
+      first = false;
+      bool header = fields.size() == columns.size();
+      for (std::size_t i = 0; header && i < columns.size(); ++i)
+        header = trimmed(fields[i]) == columns[i].name;
+      if (header) continue;
     }
-    first = false;
-    if (fields.size() != columns)
-      throw InputError(label + ": line " + std::to_string(line_no) + ": expected " +
-                       std::to_string(columns) + " fields, got " + std::to_string(fields.size()));
-    std::vector<double> row(columns);
-    for (std::size_t i = 0; i < columns; ++i) {
+    if (fields.size() != columns.size()) {
+      std::string names;
+      for (const auto& c : columns) names += (names.empty() ? "" : ",") + c.name;
+      throw InputError(at + ": expected " + std::to_string(columns.size()) +
+                       " comma-separated numbers (" + names + "), got " +
+                       std::to_string(fields.size()) + " field(s)");
+    }
+    std::vector<double> row(columns.size());
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      const std::string where = at + ", field " + std::to_string(i + 1) + " (" + columns[i].name + ")";
       if (!to_double(fields[i], row[i]))
-        throw InputError(label + ": line " + std::to_string(line_no) + ", field " +
-                         std::to_string(i + 1) + ": not a finite number: '" + fields[i] + "'");
+        throw InputError(where + ": not a finite number: '" + fields[i] + "'");
+      if (std::abs(row[i]) > columns[i].max_abs)
+        throw InputError(where + ": " + format_number(row[i]) + " is outside [-" +
+                         format_number(columns[i].max_abs) + ", " +
+                         format_number(columns[i].max_abs) + "]");
     }
     rows.push_back(std::move(row));
   }

@@ -45,13 +45,24 @@ std::vector<double> parse_numbers(const std::string& text, std::size_t count,
 //! Shortest decimal text that reads back as exactly `v` (std::to_chars).
 std::string format_number(double v);
 
-//! Reads a whole file, or stdin when path is "-"; InputError when unreadable.
+//! Reads a whole file, or stdin when path is "-"; InputError when unreadable
+//! (missing, a directory, a read error).
 std::string read_input(const std::string& path);
 
-//! Splits CSV text into rows of numbers with `columns` fields; skips one
-//! header row if its first field is not a number. InputError names line and
-//! field when a value is malformed.
-std::vector<std::vector<double>> read_numeric_csv(const std::string& text, std::size_t columns,
+//! One column of a numeric CSV file: its header name and the largest
+//! magnitude accepted.
+struct CsvColumn {
+  std::string name;
+  double max_abs;
+};
+
+//! Splits CSV text (comma-separated, blank lines ignored) into rows of
+//! numbers, one per column. The first non-blank line is a header exactly when
+//! its fields are the column names in order (spaces around them ignored); any
+//! other line must hold as many finite numbers as there are columns, each
+//! within its column's magnitude. InputError "LABEL: line N[, field K]: what".
+std::vector<std::vector<double>> read_numeric_csv(const std::string& text,
+                                                  const std::vector<CsvColumn>& columns,
                                                   const std::string& label);
 
 //! --planner baseline|proposed and --reuse LIST of design, plan and tour:

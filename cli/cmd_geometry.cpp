@@ -41,6 +41,11 @@ int cmd_validate(const Argv& argv) {
   std::printf("AO graph   %zu nodes, %zu edges; M = %d sequences of %d visits\n",
               s.activity.transitions.size(), edges, s.activity.sequences, s.activity.visits);
   std::printf("c-space    %d slices, %zu convex pieces\n", cs.slices(), cs.piece_count());
+  if (const int longest = geometry::longest_walk(s.activity, s.activity.visits);
+      longest < s.activity.visits) {
+    std::printf("note       no sequence of %d visits (longest %d): hrspace design refuses it\n",
+                s.activity.visits, longest);
+  }
   return 0;
 }
 
@@ -49,7 +54,8 @@ int cmd_collide(const Argv& argv) {
   const std::string usage = "hrspace collide SCENE [--poses F|-] [--slices K]";
   if (args.help()) {
     std::cout << "usage: " << usage
-              << "\n\nFor each pose x,y,theta (CSV, header optional; default stdin) prints\n"
+              << "\n\nFor each pose x,y,theta (CSV; an optional first line x,y,theta is a header;\n"
+                 "|x|, |y| <= 1000 m, |theta| <= 1000 rad; default stdin) prints\n"
                  "x,y,theta,free,clear_left,clear_right. free is 1 only when the chair is\n"
                  "certainly inside the room and clear of all furniture (exact conservative\n"
                  "check with K orientation slices, default 72); clear_left/right are the\n"
@@ -62,7 +68,9 @@ int cmd_collide(const Argv& argv) {
   opt.slices = static_cast<int>(args.integer("slices", 72, 4, 100000));
   const geometry::CSpace cs(s, opt);
   const std::string source = args.get_or("poses", "-");
-  const auto rows = read_numeric_csv(read_input(source), 3, source == "-" ? "stdin" : source);
+  const double c = geometry::limits::kCoordinate, a = geometry::limits::kAngle;
+  const auto rows = read_numeric_csv(read_input(source), {{"x", c}, {"y", c}, {"theta", a}},
+                                     source == "-" ? "stdin" : source);
   std::printf("x,y,theta,free,clear_left,clear_right\n");
   for (const auto& r : rows) {
     const geometry::Pose2 p{r[0], r[1], r[2]};

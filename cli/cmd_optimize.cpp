@@ -1,6 +1,7 @@
 // `hrspace design`: the layout optimizer of paper §III (optimize/design.h)
 // with its outputs (optimize/design_io.h), a progress bar on a terminal and
-// Ctrl-C writing the best design so far (exit 130).
+// Ctrl-C, SIGTERM or SIGHUP writing the best design so far (exit 128 + the
+// signal's number).
 
 #include <unistd.h>
 
@@ -11,7 +12,8 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <cctype>
+#include <iterator>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -28,16 +30,64 @@ namespace hrs::cli {
 
 namespace {
 
-// Set by the SIGINT handler; a signal handler can only reach a static.
+// Set by the signal handler; a signal handler can only reach a static.
 std::atomic<bool> g_interrupted{false};
+std::atomic<int> g_signal{0};  //!< the first stop signal received
 
-// The first Ctrl-C asks for a clean stop; a second one ends the process at
-// once (the default action), for when an iteration takes too long.
-extern "C" void on_sigint(int) {
+//! The signals that ask for a clean stop.
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+// The first stop signal asks for a clean stop; a second one ends the process
+// at once (that signal's default action), for when an iteration takes too long.
+extern "C" void on_design_stop_signal(int sig) {
+  int none = 0;
+  g_signal.compare_exchange_strong(none, sig);
   if (g_interrupted.exchange(true)) {
-    std::signal(SIGINT, SIG_DFL);
-    std::raise(SIGINT);
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
   }
+}
+
+//! Removes outputs of an earlier run in `out` that this run did not write:
+//! with several designs (`multi`), numbered design directories beyond `keep`
+//! and the files of a single design; with one, all numbered design
+//! directories and the contact sheet. Only hrspace's own file names are
+//! removed; a numbered directory holding anything else is refused
+//! (InputError). `dry_run` only checks. Returns the number of stale outputs.
+int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep, bool dry_run) {
+  namespace fs = std::filesystem;
+  const auto& names = optimize::design_file_names();
+  std::vector<fs::path> stale;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(out, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.empty() || name.size() > 9 || !std::all_of(name.begin(), name.end(), ::isdigit))
+      continue;
+    if (!entry.is_directory(ec)) continue;
+    const long k = std::stol(name);
+    if (multi && k >= 1 && k <= keep && name == std::to_string(k)) continue;
+    for (const auto& inner : fs::directory_iterator(entry.path(), ec)) {
+      const std::string f = inner.path().filename().string();
+      if (std::find(names.begin(), names.end(), f) == names.end() && f.rfind(".", 0) != 0) {
+        throw InputError(entry.path().string() + ": holds " + f +
+                         ", not an output of hrspace design; remove it or choose another --out");
+      }
+    }
+    stale.push_back(entry.path());
+  }
+  if (multi) {
+    for (const auto& n : names)
+      if (fs::exists(out / n, ec)) stale.push_back(out / n);
+  } else if (fs::exists(out / "contact_sheet.svg", ec)) {
+    stale.push_back(out / "contact_sheet.svg");
+  }
+  if (!dry_run) {
+    for (const auto& p : stale) {
+      fs::remove_all(p, ec);
+      if (ec) throw OutputError(p.string() + ": cannot remove stale output: " + ec.message());
+    }
+  }
+  return static_cast<int>(stale.size());
 }
 
 constexpr const char* kDesignUsage =
@@ -80,8 +130,12 @@ constexpr const char* kDesignUsage =
     "                              iterations whose ends a certified grid separates fails\n"
     "                              at once (beyond the paper; rarely pays, docs/planner.md)\n"
     "                  e.g. --reuse all,proofs\n"
-    "Ctrl-C stops after the current iteration, writes the best design so far, exits 130;\n"
-    "a second Ctrl-C quits at once.\n";
+    "DIR is created and checked writable before any work. Each file is written to a\n"
+    "temporary file and renamed into place once all of a design's files are written.\n"
+    "Outputs of an earlier run that this run does not rewrite (numbered design\n"
+    "directories beyond K, a stale contact sheet) are removed at the end, with a note.\n"
+    "Ctrl-C, SIGTERM or SIGHUP stops after the current iteration, writes the best\n"
+    "design so far and exits 128 + the signal (130 for Ctrl-C); a second one quits at once.\n";
 
 std::string format_eta(double seconds) {
   const long s = static_cast<long>(seconds + 0.5);
@@ -112,6 +166,10 @@ int cmd_design(const Argv& argv) {
   const std::string path = args.positional()[0];
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
+  geometry::require_sequences(scene, path == "-" ? "stdin" : path);
+  // The output directory before any work: an unwritable --out loses nothing.
+  optimize::require_writable_directory(*out);
+  remove_stale_outputs(*out, designs > 1, designs, true);  // refuses foreign files now, not at the end
   if (const auto w = args.get("weights")) {
     const bool five = std::count(w->begin(), w->end(), ',') == 4;
     const std::vector<double> v = parse_numbers(*w, five ? 5 : 3, "--weights");
@@ -123,11 +181,13 @@ int cmd_design(const Argv& argv) {
   }
 
   g_interrupted.store(false);
+  g_signal.store(0);
   struct sigaction action {};
-  action.sa_handler = on_sigint;
+  action.sa_handler = on_design_stop_signal;
   sigemptyset(&action.sa_mask);
-  struct sigaction previous {};
-  sigaction(SIGINT, &action, &previous);
+  struct sigaction previous[std::size(kStopSignals)] {};
+  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+    sigaction(kStopSignals[i], &action, &previous[i]);
 
   const bool tty = isatty(STDERR_FILENO) != 0;
   std::vector<std::string> svgs;
@@ -178,12 +238,20 @@ int cmd_design(const Argv& argv) {
     interrupted = result.stopped || g_interrupted.load();
   }
   if (designs > 1) {
-    std::ofstream sheet(std::filesystem::path(*out) / "contact_sheet.svg", std::ios::binary);
-    sheet << optimize::contact_sheet_svg(svgs);
+    optimize::write_files_atomic(
+        {{std::filesystem::path(*out) / "contact_sheet.svg", optimize::contact_sheet_svg(svgs)}});
+  }
+  // Outputs of an earlier run beyond what this run wrote would sit beside the
+  // new contact sheet unnoticed.
+  const auto written = static_cast<long>(svgs.size());
+  if (const int removed = remove_stale_outputs(*out, designs > 1, written, false)) {
+    std::fprintf(stderr, "hrspace design: removed %d stale output(s) of an earlier run in %s\n",
+                 removed, out->c_str());
   }
   std::fflush(stdout);
-  sigaction(SIGINT, &previous, nullptr);
-  return interrupted ? 130 : 0;
+  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+    sigaction(kStopSignals[i], &previous[i], nullptr);
+  return interrupted ? 128 + (g_signal.load() ? g_signal.load() : SIGINT) : 0;
 }
 
 }  // namespace hrs::cli

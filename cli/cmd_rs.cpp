@@ -9,6 +9,7 @@
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "geometry/error.h"
+#include "geometry/scene.h"
 #include "rs/reeds_shepp.h"
 
 namespace hrs::cli {
@@ -20,9 +21,10 @@ constexpr const char* kUsage =
     "\n"
     "Shortest Reeds-Shepp path (all 48 words, exact) for each pose pair.\n"
     "\n"
-    "  --radius R     turning radius in metres (> 0), required\n"
-    "  --pairs FILE   CSV with columns x0,y0,t0,x1,y1,t1 (metres, radians);\n"
-    "                 a header row is optional; '-' (default) reads stdin\n"
+    "  --radius R     turning radius in metres (0.001 to 2000), required\n"
+    "  --pairs FILE   CSV with columns x0,y0,t0,x1,y1,t1 (metres, radians;\n"
+    "                 |x|, |y| <= 1000, |t| <= 1000); an optional first line\n"
+    "                 x0,y0,t0,x1,y1,t1 is a header; '-' (default) reads stdin\n"
     "\n"
     "Output (stdout): CSV with header length,word,segments, one row per pair in\n"
     "input order. word is the steering letters each followed by its gear sign\n"
@@ -41,9 +43,15 @@ int cmd_rs(const Argv& argv) {
   args.expect_positional(0, "hrspace rs --radius R [--pairs FILE|-]");
   if (!args.get("radius")) throw InputError("--radius is required (turning radius in metres)");
   const double radius = args.number("radius", 0.0);
-  if (!(radius > 0.0)) throw InputError("--radius: must be > 0, got " + *args.get("radius"));
+  if (!(radius >= geometry::limits::kMinLength && radius <= geometry::limits::kLength))
+    throw InputError("--radius: must be within [" + format_number(geometry::limits::kMinLength) +
+                     ", " + format_number(geometry::limits::kLength) + "] m, got " +
+                     *args.get("radius"));
   const std::string path = args.get_or("pairs", "-");
-  const auto rows = read_numeric_csv(read_input(path), 6, path == "-" ? "stdin" : path);
+  const double c = geometry::limits::kCoordinate, a = geometry::limits::kAngle;
+  const auto rows = read_numeric_csv(
+      read_input(path), {{"x0", c}, {"y0", c}, {"t0", a}, {"x1", c}, {"y1", c}, {"t1", a}},
+      path == "-" ? "stdin" : path);
 
   std::string out = "length,word,segments\n";
   for (const auto& r : rows) {

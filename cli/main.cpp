@@ -1,7 +1,9 @@
 // hrspace: the command-line entry point. Dispatches to the subcommands of
 // docs/design-notes.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -39,6 +41,21 @@ void usage(std::ostream& out) {
   }
 }
 
+//! Flushes stdout and checks it: a write error (a full device, a closed
+//! file) must not pass as success. Returns `status`, or 1 after a message.
+int checked_output(const std::string& name, int status) {
+  std::cout.flush();
+  const bool cout_failed = !std::cout;
+  errno = 0;
+  if (std::fflush(stdout) != 0 || std::ferror(stdout) || cout_failed) {
+    const int err = errno;
+    std::cerr << "hrspace " << name << ": cannot write to standard output"
+              << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+    return 1;
+  }
+  return status;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -50,17 +67,21 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     usage(std::cout);
-    return 0;
+    return checked_output(name, 0);
   }
   const hrs::cli::Argv args(argv + 2, argv + argc);
   for (const auto& c : kCommands) {
     if (name != c.name) continue;
     try {
-      return c.run(args);
+      return checked_output(name, c.run(args));
     } catch (const hrs::InputError& e) {
       std::cout.flush();
       std::cerr << "hrspace " << name << ": " << e.what() << "\n";
       return 2;
+    } catch (const hrs::OutputError& e) {
+      std::cout.flush();
+      std::cerr << "hrspace " << name << ": " << e.what() << "\n";
+      return 1;
     } catch (const std::exception& e) {
       std::cout.flush();
       std::cerr << "hrspace " << name << ": internal error: " << e.what() << "\n";

@@ -148,8 +148,9 @@ class Reader {
     if (scene.name.empty()) fail("/name", "must not be empty");
     scene.room = room(require(root, "", "room"), "/room");
     scene.door = door(require(root, "", "door"), "/door", scene.room);
-    scene.wheelchair = wheelchair(require(root, "", "wheelchair"), "/wheelchair");
-    scene.objects = objects(require(root, "", "objects"), "/objects", scene.room);
+    scene.wheelchair = wheelchair(require(root, "", "wheelchair"), "/wheelchair", scene.room);
+    scene.objects = objects(require(root, "", "objects"), "/objects", scene);
+    check_start(scene);
     if (const Json* j = optional(root, "relations")) {
       scene.relations = relations(*j, "/relations", scene);
     }
@@ -209,23 +210,51 @@ class Reader {
     return v;
   }
 
+  //! A finite number in [lo, hi]; `what` names the limit in the message.
+  double bounded(const Json& j, const std::string& ptr, double lo, double hi,
+                 const char* what) const {
+    const double v = number(j, ptr);
+    if (!(v >= lo && v <= hi)) {
+      fail(ptr, "must be within [" + num(lo) + ", " + num(hi) + "] (" + what + "), got " + num(v));
+    }
+    return v;
+  }
+
+  //! A length > 0: a size, width, depth or radius (limits::kMinLength..kLength).
   double positive(const Json& j, const std::string& ptr) const {
     const double v = number(j, ptr);
     if (!(v > 0.0)) fail(ptr, "must be > 0, got " + num(v));
-    return v;
+    return bounded(j, ptr, limits::kMinLength, limits::kLength, "length limits of the format");
   }
 
+  //! A distance >= 0 (at most limits::kLength).
   double non_negative(const Json& j, const std::string& ptr) const {
     const double v = number(j, ptr);
     if (!(v >= 0.0)) fail(ptr, "must be >= 0, got " + num(v));
-    return v;
+    return bounded(j, ptr, 0.0, limits::kLength, "length limits of the format");
   }
 
-  int integer_at_least(const Json& j, const std::string& ptr, int min) const {
+  //! A weight >= 0 (at most limits::kWeight).
+  double weight(const Json& j, const std::string& ptr) const {
+    const double v = number(j, ptr);
+    if (!(v >= 0.0)) fail(ptr, "must be >= 0, got " + num(v));
+    return bounded(j, ptr, 0.0, limits::kWeight, "weight limit of the format");
+  }
+
+  double coordinate(const Json& j, const std::string& ptr) const {
+    return bounded(j, ptr, -limits::kCoordinate, limits::kCoordinate,
+                   "coordinate limit of the format");
+  }
+
+  double angle(const Json& j, const std::string& ptr) const {
+    return bounded(j, ptr, -limits::kAngle, limits::kAngle, "angle limit of the format");
+  }
+
+  int integer_in(const Json& j, const std::string& ptr, int min, int max) const {
     if (!j.is_number_integer()) fail(ptr, "must be an integer, got " + shown(j));
-    const bool too_big = j.is_number_unsigned() ? j.get<std::uint64_t>() > std::uint64_t{1} << 30
-                                                : j.get<std::int64_t>() > std::int64_t{1} << 30;
-    if (too_big) fail(ptr, "must be <= " + std::to_string(1 << 30) + ", got " + j.dump());
+    const bool too_big = j.is_number_unsigned() ? j.get<std::uint64_t>() > std::uint64_t(max)
+                                                : j.get<std::int64_t>() > std::int64_t{max};
+    if (too_big) fail(ptr, "must be <= " + std::to_string(max) + " (limit of the format), got " + j.dump());
     const auto v = j.get<std::int64_t>();
     if (v < min) fail(ptr, "must be >= " + std::to_string(min) + ", got " + std::to_string(v));
     return static_cast<int>(v);
@@ -246,7 +275,7 @@ class Reader {
     Vec2 p;
     fixed_array(j, ptr, 2, "a point [x, y]",
                 [&](const Json& e, const std::string& p2, std::size_t i) {
-                  (i == 0 ? p.x : p.y) = number(e, p2);
+                  (i == 0 ? p.x : p.y) = coordinate(e, p2);
                 });
     return p;
   }
@@ -255,7 +284,7 @@ class Reader {
     Pose2 p;
     fixed_array(j, ptr, 3, "a pose [x, y, theta]",
                 [&](const Json& e, const std::string& p2, std::size_t i) {
-                  const double v = number(e, p2);
+                  const double v = i < 2 ? coordinate(e, p2) : angle(e, p2);
                   (i == 0 ? p.x : i == 1 ? p.y : p.theta) = v;
                 });
     return p;
@@ -273,8 +302,20 @@ class Reader {
   Polygon polygon(const Json& j, const std::string& ptr) const {
     expect_array(j, ptr);
     if (j.size() < 3) fail(ptr, "needs at least 3 vertices, got " + std::to_string(j.size()));
+    if (j.size() > limits::kVertices) {
+      fail(ptr, "has " + std::to_string(j.size()) + " vertices, more than the format's limit of " +
+                    std::to_string(limits::kVertices));
+    }
     Polygon poly;
     for (std::size_t i = 0; i < j.size(); ++i) poly.push_back(point(j[i], child(ptr, i)));
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const double edge = norm(poly[(i + 1) % poly.size()] - poly[i]);
+      if (!(edge >= limits::kMinLength)) {
+        fail(child(ptr, (i + 1) % poly.size()),
+             "edge from vertex " + std::to_string(i) + " is " + num(edge) +
+                 " m long, shorter than the format's limit of " + num(limits::kMinLength) + " m");
+      }
+    }
     if (!is_simple(poly)) {
       fail(ptr, "is not a simple polygon (edges cross, touch or repeat a vertex)");
     }
@@ -296,6 +337,14 @@ class Reader {
     Room room;
     if (size) {
       const auto s = size2(*size, child(ptr, "size"), "[width, depth]");
+      for (std::size_t i = 0; i < 2; ++i) {
+        if (s[i] > limits::kCoordinate) {
+          fail(child(child(ptr, "size"), i), "must be within [" + num(limits::kMinLength) + ", " +
+                                                 num(limits::kCoordinate) +
+                                                 "] (coordinate limit of the format), got " +
+                                                 num(s[i]));
+        }
+      }
       room.size = s;
       room.polygon = {{0.0, 0.0}, {s[0], 0.0}, {s[0], s[1]}, {0.0, s[1]}};
     } else {
@@ -325,14 +374,61 @@ class Reader {
     return door;
   }
 
-  Wheelchair wheelchair(const Json& j, const std::string& ptr) const {
+  Wheelchair wheelchair(const Json& j, const std::string& ptr, const Room& room) const {
     expect_object(j, ptr);
     check_keys(j, ptr, {"length", "width", "turning_radius"});
     Wheelchair w;
     w.length = positive(require(j, ptr, "length"), child(ptr, "length"));
     w.width = positive(require(j, ptr, "width"), child(ptr, "width"));
     w.turning_radius = positive(require(j, ptr, "turning_radius"), child(ptr, "turning_radius"));
+    // The chair must fit in the room's bounding box in some orientation, and
+    // a turning circle wider than the room only makes every plan slow.
+    Vec2 lo = room.polygon.front(), hi = lo;
+    for (Vec2 v : room.polygon) {
+      lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+      hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+    }
+    const double extent = std::max(hi.x - lo.x, hi.y - lo.y);
+    const double diagonal = norm(hi - lo);
+    if (std::min(w.length, w.width) > std::min(hi.x - lo.x, hi.y - lo.y) ||
+        std::max(w.length, w.width) > diagonal) {
+      fail(child(ptr, w.length >= w.width ? "length" : "width"),
+           "the wheelchair (" + num(w.length) + " x " + num(w.width) +
+               " m) does not fit in the room (bounding box " + num(hi.x - lo.x) + " x " +
+               num(hi.y - lo.y) + " m)");
+    }
+    if (w.turning_radius > 0.5 * extent) {
+      fail(child(ptr, "turning_radius"),
+           "must be at most half the room's larger extent (" + num(0.5 * extent) +
+               " m: a U-turn fits), got " + num(w.turning_radius));
+    }
     return w;
+  }
+
+  //! The wheelchair at its start pose lies inside the room and clear of every
+  //! fixed object (movable ones are moved by the optimizer); the pointer is
+  //! /door/start when given, else /door/center, from which it is derived.
+  void check_start(const Scene& scene) const {
+    const bool given = scene.door.start.has_value();
+    const std::string ptr = given ? "/door/start" : "/door/center";
+    const Pose2 start = door_start_pose(scene);
+    const double hl = 0.5 * scene.wheelchair.length, hw = 0.5 * scene.wheelchair.width;
+    Polygon chair;
+    for (Vec2 v : {Vec2{hl, hw}, Vec2{-hl, hw}, Vec2{-hl, -hw}, Vec2{hl, -hw}}) {
+      chair.push_back(to_world(start, v));
+    }
+    const std::string at = std::string(given ? "the start pose " : "the default start pose ") +
+                           num(start.x) + "," + num(start.y) + "," + num(start.theta);
+    if (!is_simple(chair) || !polygon_inside(chair, scene.room.polygon)) {
+      fail(ptr, at + " puts the wheelchair (partly) outside the room");
+    }
+    for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+      const Object& o = scene.objects[k];
+      if (o.fixed && interiors_overlap(chair, world_footprint(o))) {
+        fail(ptr, at + " puts the wheelchair into fixed object " + literal(o.id) + " (/objects/" +
+                      std::to_string(k) + ")");
+      }
+    }
   }
 
   Object object(const Json& j, const std::string& ptr) const {
@@ -368,7 +464,7 @@ class Reader {
     WallPreference w;
     if (const Json* d = optional(j, "distance"))
       w.distance = non_negative(*d, child(ptr, "distance"));
-    if (const Json* a = optional(j, "angle")) w.angle = number(*a, child(ptr, "angle"));
+    if (const Json* a = optional(j, "angle")) w.angle = angle(*a, child(ptr, "angle"));
     return w;
   }
 
@@ -397,8 +493,14 @@ class Reader {
     return a;
   }
 
-  std::vector<Object> objects(const Json& j, const std::string& ptr, const Room& room) const {
+  std::vector<Object> objects(const Json& j, const std::string& ptr, const Scene& scene) const {
     expect_array(j, ptr);
+    if (j.size() > limits::kObjects) {
+      fail(ptr, "has " + std::to_string(j.size()) + " objects, more than the format's limit of " +
+                    std::to_string(limits::kObjects));
+    }
+    const Room& room = scene.room;
+    const Polygon clear_zone = door_clear_zone(scene);
     std::vector<Object> out;
     for (std::size_t i = 0; i < j.size(); ++i) {
       const std::string op = child(ptr, i);
@@ -408,11 +510,21 @@ class Reader {
           fail(child(op, "id"), "duplicate id " + literal(o.id) + " (also " + child(ptr, k) + ")");
         }
       }
-      if (!polygon_inside(world_footprint(o), room.polygon)) {
+      const Polygon mine = world_footprint(o);
+      // Rounding in the placement can collapse or fold a footprint; the exact
+      // region tests below need a simple counter-clockwise polygon.
+      if (!is_simple(mine) || !is_counterclockwise(mine)) {
+        fail(child(op, "pose"), "the footprint of " + literal(o.id) +
+                                    " degenerates when placed at this pose (rounding)");
+      }
+      if (!polygon_inside(mine, room.polygon)) {
         fail(child(op, "pose"), "the footprint of " + literal(o.id) + " is not inside the room");
       }
+      if (o.fixed && interiors_overlap(mine, clear_zone)) {
+        fail(child(op, "pose"), "fixed object " + literal(o.id) +
+                                    " blocks the door's clear zone (no layout could be valid)");
+      }
       if (o.fixed) {
-        const Polygon mine = world_footprint(o);
         for (std::size_t k = 0; k < out.size(); ++k) {
           if (out[k].fixed && interiors_overlap(mine, world_footprint(out[k]))) {
             fail(child(op, "pose"), "fixed object " + literal(o.id) + " overlaps fixed object " +
@@ -434,6 +546,10 @@ class Reader {
 
   std::vector<Relation> relations(const Json& j, const std::string& ptr, const Scene& scene) const {
     expect_array(j, ptr);
+    if (j.size() > limits::kRelations) {
+      fail(ptr, "has " + std::to_string(j.size()) + " relations, more than the format's limit of " +
+                    std::to_string(limits::kRelations));
+    }
     std::vector<Relation> out;
     for (std::size_t i = 0; i < j.size(); ++i) {
       const std::string rp = child(ptr, i);
@@ -448,9 +564,9 @@ class Reader {
              "a relation needs two different objects, got " + literal(r.a) + " twice");
       if (const Json* d = optional(e, "distance"))
         r.distance = non_negative(*d, child(rp, "distance"));
-      if (const Json* a = optional(e, "angle")) r.angle = number(*a, child(rp, "angle"));
+      if (const Json* a = optional(e, "angle")) r.angle = angle(*a, child(rp, "angle"));
       if (!r.distance && !r.angle) fail(child(rp, "distance"), "give distance and/or angle");
-      if (const Json* w = optional(e, "weight")) r.weight = non_negative(*w, child(rp, "weight"));
+      if (const Json* w = optional(e, "weight")) r.weight = weight(*w, child(rp, "weight"));
       out.push_back(std::move(r));
     }
     return out;
@@ -490,10 +606,10 @@ class Reader {
       fail(child(tp, kStartNode), "missing required row of the start node");
     }
     if (const Json* s = optional(j, "sequences")) {
-      a.sequences = integer_at_least(*s, child(ptr, "sequences"), 1);
+      a.sequences = integer_in(*s, child(ptr, "sequences"), 1, limits::kSequences);
     }
     if (const Json* v = optional(j, "visits")) {
-      a.visits = integer_at_least(*v, child(ptr, "visits"), 1);
+      a.visits = integer_in(*v, child(ptr, "visits"), 1, limits::kVisits);
     }
     return a;
   }
@@ -505,13 +621,13 @@ class Reader {
     if (const Json* p = optional(j, "path")) {
       fixed_array(*p, child(ptr, "path"), 3, "[length, rotation, clearance]",
                   [&](const Json& e, const std::string& ep, std::size_t i) {
-                    w.path[i] = non_negative(e, ep);
+                    w.path[i] = weight(e, ep);
                   });
     }
     if (const Json* p = optional(j, "interior")) {
       fixed_array(*p, child(ptr, "interior"), 2, "[distance, rotation]",
                   [&](const Json& e, const std::string& ep, std::size_t i) {
-                    w.interior[i] = non_negative(e, ep);
+                    w.interior[i] = weight(e, ep);
                   });
     }
     return w;
@@ -645,6 +761,30 @@ Scene parse_scene(std::string_view text, const std::string& label) {
   if (std::all_of(text.begin(), text.end(),
                   [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; })) {
     reader.fail("", "empty file, expected a JSON object");
+  }
+  // The parser and the messages recurse into nested values: bound the depth
+  // first, with a linear scan that cannot recurse.
+  int depth = 0;
+  bool in_string = false, escaped = false;
+  for (const char c : text) {
+    if (in_string) {
+      if (escaped) {
+        escaped = false;
+      } else if (c == '\\') {
+        escaped = true;
+      } else if (c == '"') {
+        in_string = false;
+      }
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limits::kDepth) {
+        reader.fail("", "JSON nested deeper than " + std::to_string(limits::kDepth) +
+                            " levels (limit of the format)");
+      }
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
   }
   Json root;
   try {
@@ -812,6 +952,33 @@ Pose2 door_start_pose(const Scene& scene) {
   const Vec2 n = door_inward_normal(scene);
   const Vec2 p = scene.door.center + (0.5 * scene.wheelchair.length + 0.05) * n;
   return {p.x, p.y, std::atan2(n.y, n.x)};
+}
+
+int longest_walk(const Activity& activity, int cap) {
+  std::set<std::string> at{std::string(kStartNode)};
+  for (int step = 0; step < cap; ++step) {
+    std::set<std::string> next;
+    for (const std::string& from : at) {
+      const auto row = activity.transitions.find(from);
+      if (row == activity.transitions.end()) continue;
+      for (const auto& [to, p] : row->second) {
+        if (to != from && p > 0.0) next.insert(to);
+      }
+    }
+    if (next.empty()) return step;
+    at = std::move(next);
+  }
+  return cap;
+}
+
+void require_sequences(const Scene& scene, const std::string& label) {
+  const int longest = longest_walk(scene.activity, scene.activity.visits);
+  if (longest < scene.activity.visits) {
+    throw InputError(one_line(label + ": /activity/visits: no sequence of " +
+                              std::to_string(scene.activity.visits) +
+                              " visits leaves the door (the AO graph's longest has " +
+                              std::to_string(longest) + ")"));
+  }
 }
 
 double signed_area(const Polygon& polygon) {

@@ -6,6 +6,7 @@
 // with "FILE: /json/pointer: what is wrong".
 
 #include <array>
+#include <cstddef>
 #include <map>
 #include <optional>
 #include <string>
@@ -17,6 +18,24 @@
 namespace hrs::geometry {
 
 using Polygon = std::vector<Vec2>;  //!< vertices, counter-clockwise, not closed
+
+//! Numeric and size limits of the format (docs/scene-format.md, "Limits"):
+//! within them every geometric construction of hrspace stays sound (no
+//! vertex collapses under rounding, CGAL's filters never overflow) and every
+//! computation on a scene is bounded in time and memory.
+namespace limits {
+inline constexpr double kCoordinate = 1000.0;  //!< |x|, |y| of every point and position, m
+inline constexpr double kAngle = 1000.0;       //!< |angle| of every heading or angle, rad
+inline constexpr double kMinLength = 1e-3;     //!< smallest size, width, depth, edge, radius, m
+inline constexpr double kLength = 2000.0;      //!< largest length or distance, m
+inline constexpr double kWeight = 1e6;         //!< largest weight
+inline constexpr int kVisits = 100;            //!< largest activity.visits
+inline constexpr int kSequences = 1000;        //!< largest activity.sequences (M)
+inline constexpr std::size_t kObjects = 100;   //!< most objects
+inline constexpr std::size_t kVertices = 1000;   //!< most vertices of a polygon
+inline constexpr std::size_t kRelations = 1000;  //!< most relations
+inline constexpr int kDepth = 64;                //!< deepest nesting of JSON arrays and objects
+}  // namespace limits
 
 //! True if `p` is inside the simple polygon (even-odd crossings, doubles: for
 //! filters and margins, not for exact predicates).
@@ -135,6 +154,13 @@ Vec2 door_inward_normal(const Scene& scene);
 Polygon door_clear_zone(const Scene& scene);
 //! The wheelchair's start pose (explicit or the default just inside the door).
 Pose2 door_start_pose(const Scene& scene);
+//! Length, capped at `cap`, of the longest walk from "door" through the AO
+//! graph that moves at every step (a transition of probability > 0 to another
+//! node; staying is not a move).
+int longest_walk(const Activity& activity, int cap);
+//! Throws InputError("LABEL: /activity/visits: ...") when the AO graph has no
+//! sequence of activity.visits moves: nothing to tour (design needs one).
+void require_sequences(const Scene& scene, const std::string& label);
 //! Area of a simple polygon (positive when counter-clockwise).
 double signed_area(const Polygon& polygon);
 

@@ -1,9 +1,16 @@
+// The output files of `hrspace design` (optimize/design_io.h): their texts,
+// and writing them so that no failure leaves a truncated file behind.
+
 #include "optimize/design_io.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -79,13 +86,87 @@ struct Frame {
   }
 };
 
-void write_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw InputError(path.string() + ": cannot write file");
+//! A temporary name beside `path`, unique to this process.
+std::filesystem::path temporary_beside(const std::filesystem::path& path) {
+  std::string name = ".";
+  name += path.filename().string();
+  name += ".tmp-";
+  name += std::to_string(::getpid());
+  return path.parent_path() / name;
+}
+
+//! Writes `text` to a new file at `path` and flushes it to disk; false with
+//! errno set on failure.
+bool write_synced(const std::filesystem::path& path, const std::string& text) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return false;
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int saved = n < 0 ? errno : EIO;
+      ::close(fd);
+      errno = saved;
+      return false;
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) {
+    const int saved = errno;
+    ::close(fd);
+    errno = saved;
+    return false;
+  }
+  return ::close(fd) == 0;
 }
 
 }  // namespace
+
+void write_files_atomic(const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
+  std::vector<std::filesystem::path> temporaries;
+  auto discard = [&] {
+    std::error_code ignored;
+    for (const auto& t : temporaries) std::filesystem::remove(t, ignored);
+  };
+  for (const auto& [path, text] : files) {
+    temporaries.push_back(temporary_beside(path));
+    if (!write_synced(temporaries.back(), text)) {
+      const std::string reason = std::strerror(errno);
+      discard();
+      throw OutputError(path.string() + ": cannot write file: " + reason);
+    }
+  }
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (::rename(temporaries[i].c_str(), files[i].first.c_str()) != 0) {
+      const std::string reason = std::strerror(errno);
+      discard();
+      throw OutputError(files[i].first.string() + ": cannot replace file: " + reason);
+    }
+  }
+}
+
+void require_writable_directory(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir.string() + ": cannot create directory: " + ec.message());
+  if (!std::filesystem::is_directory(dir, ec)) {
+    throw InputError(dir.string() + ": exists and is not a directory");
+  }
+  const std::filesystem::path probe = temporary_beside(dir / "write-check");
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw InputError(dir.string() + ": directory is not writable: " + std::strerror(errno));
+  }
+  ::close(fd);
+  std::filesystem::remove(probe, ec);
+}
+
+const std::vector<std::string>& design_file_names() {
+  static const std::vector<std::string> names{"layout.json", "tours.json", "design.svg",
+                                              "report.json"};
+  return names;
+}
 
 std::string tours_document(const DesignResult& result) {
   json tours = json::array();
@@ -315,12 +396,12 @@ void write_design(const DesignResult& result, const RunInfo& info,
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir.string() + ": cannot create directory: " + ec.message());
-  write_file(dir / "layout.json", geometry::write_scene(result.layout));
-  write_file(dir / "tours.json", tours_document(result));
   const std::string title = result.layout.name + " — seed " + std::to_string(info.seed) +
                             (result.valid ? "" : " (NOT VALID)");
-  write_file(dir / "design.svg", design_svg(result, title));
-  write_file(dir / "report.json", report_document(result, info));
+  write_files_atomic({{dir / "layout.json", geometry::write_scene(result.layout)},
+                      {dir / "tours.json", tours_document(result)},
+                      {dir / "design.svg", design_svg(result, title)},
+                      {dir / "report.json", report_document(result, info)}});
 }
 
 }  // namespace hrs::optimize

@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "optimize/design.h"
@@ -33,8 +34,23 @@ std::string design_svg(const DesignResult& result, const std::string& title);
 //! One SVG showing several design.svg texts side by side (columns per row).
 std::string contact_sheet_svg(const std::vector<std::string>& svgs, int columns = 4);
 //! Writes layout.json, tours.json, design.svg and report.json into `dir`
-//! (created if missing). Throws InputError when the directory is not writable.
+//! (created if missing), all four through write_files_atomic. Throws
+//! InputError when the directory cannot be created, OutputError when a write
+//! fails.
 void write_design(const DesignResult& result, const RunInfo& info,
                   const std::filesystem::path& dir);
+
+//! The names write_design writes into a design directory.
+const std::vector<std::string>& design_file_names();
+
+//! Writes each (path, text) to a temporary file in the path's directory,
+//! flushed to disk, and only when all of them are written renames them into
+//! place: a kill or a full disk leaves the old files or the new ones, never a
+//! truncated file. Throws OutputError (the temporary files are removed).
+void write_files_atomic(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+//! Creates `dir` if missing and checks that a file can be created in it;
+//! InputError naming the directory otherwise. For --out, before any work.
+void require_writable_directory(const std::filesystem::path& dir);
 
 }  // namespace hrs::optimize

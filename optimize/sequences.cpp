@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <queue>
 #include <set>
 
 namespace hrs::optimize {
@@ -36,47 +35,91 @@ int AoGraph::index_of(const std::string& id) const {
 
 namespace {
 
-struct Partial {
-  double cost;             // −log L of the prefix
-  std::vector<int> nodes;  // node indices
-  // Min-heap order: lower cost first, then lexicographically smaller nodes.
-  bool operator<(const Partial& o) const {
-    if (cost != o.cost) return cost > o.cost;
-    return nodes > o.nodes;
-  }
+//! One prefix of a layer: its last node and where it came from.
+struct Prefix {
+  int parent;  //!< index in the previous layer (-1 for the start)
+  int node;
+};
+
+//! Ranking data of the current layer's prefixes.
+struct Key {
+  double cost;  //!< −log L of the prefix, summed from the start in order
+  int rank;     //!< position of the prefix's node sequence in lexicographic order
 };
 
 }  // namespace
 
+// Layered selection rather than best-first search, so that memory is bounded
+// by count × nodes × visits whatever the graph: the `count` best sequences of
+// k + 1 nodes ending at j extend sequences among the `count` best of k nodes
+// ending at their second-to-last node (any other prefix is beaten by `count`
+// prefixes with the same extension). The order is the best-first order: lower
+// cost, then lexicographically smaller node indices.
 std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& start, int visits,
                                     int count) {
   std::vector<Sequence> out;
   const int s = graph.index_of(start);
   if (s < 0 || count <= 0 || visits < 0) return out;
   const int n = static_cast<int>(graph.nodes().size());
-  std::priority_queue<Partial> queue;
-  queue.push({0.0, {s}});
-  while (!queue.empty() && static_cast<int>(out.size()) < count) {
-    Partial top = queue.top();
-    queue.pop();
-    if (static_cast<int>(top.nodes.size()) == visits + 1) {
-      Sequence seq;
-      seq.likelihood = 1.0;
-      for (std::size_t i = 0; i < top.nodes.size(); ++i) {
-        seq.nodes.push_back(graph.nodes()[top.nodes[i]]);
-        if (i > 0) seq.likelihood *= graph.probability(top.nodes[i - 1], top.nodes[i]);
+  const auto m = static_cast<std::size_t>(count);
+  std::vector<std::vector<Prefix>> layers{{{-1, s}}};
+  std::vector<Key> keys{{0.0, 0}};
+  auto better = [](const Key& a, const Key& b) {
+    return a.cost != b.cost ? a.cost < b.cost : a.rank < b.rank;
+  };
+  for (int step = 0; step < visits; ++step) {
+    const std::vector<Prefix>& last = layers.back();
+    std::vector<Prefix> layer;
+    std::vector<Key> next_keys;
+    std::vector<std::pair<Key, int>> candidates;  // key (rank of the parent), parent index
+    for (int j = 0; j < n; ++j) {
+      candidates.clear();
+      for (std::size_t e = 0; e < last.size(); ++e) {
+        const double p = graph.probability(last[e].node, j);
+        if (p <= 0.0) continue;
+        candidates.push_back({{keys[e].cost - std::log(p), keys[e].rank}, static_cast<int>(e)});
       }
-      out.push_back(std::move(seq));
-      continue;
+      auto order = [&](const auto& a, const auto& b) { return better(a.first, b.first); };
+      if (candidates.size() > m) {
+        std::nth_element(candidates.begin(), candidates.begin() + static_cast<std::ptrdiff_t>(m),
+                         candidates.end(), order);
+        candidates.resize(m);
+      }
+      for (const auto& [key, parent] : candidates) {
+        layer.push_back({parent, j});
+        next_keys.push_back(key);  // rank of the parent for now
+      }
     }
-    const int last = top.nodes.back();
-    for (int next = 0; next < n; ++next) {
-      const double p = graph.probability(last, next);
-      if (p <= 0.0) continue;
-      Partial child{top.cost - std::log(p), top.nodes};
-      child.nodes.push_back(next);
-      queue.push(std::move(child));
+    if (layer.empty()) return out;
+    // Lexicographic rank of the new prefixes: by the parent's rank, then the node.
+    std::vector<int> index(layer.size());
+    for (std::size_t i = 0; i < index.size(); ++i) index[i] = static_cast<int>(i);
+    std::sort(index.begin(), index.end(), [&](int a, int b) {
+      const int ra = next_keys[a].rank, rb = next_keys[b].rank;
+      return ra != rb ? ra < rb : layer[a].node < layer[b].node;
+    });
+    for (std::size_t r = 0; r < index.size(); ++r) next_keys[index[r]].rank = static_cast<int>(r);
+    layers.push_back(std::move(layer));
+    keys = std::move(next_keys);
+  }
+  std::vector<int> best(keys.size());
+  for (std::size_t i = 0; i < best.size(); ++i) best[i] = static_cast<int>(i);
+  std::sort(best.begin(), best.end(), [&](int a, int b) { return better(keys[a], keys[b]); });
+  if (best.size() > m) best.resize(m);
+  for (const int b : best) {
+    std::vector<int> nodes(layers.size());
+    int at = b;
+    for (std::size_t k = layers.size(); k-- > 0;) {
+      nodes[k] = layers[k][static_cast<std::size_t>(at)].node;
+      at = layers[k][static_cast<std::size_t>(at)].parent;
     }
+    Sequence seq;
+    seq.likelihood = 1.0;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      seq.nodes.push_back(graph.nodes()[nodes[i]]);
+      if (i > 0) seq.likelihood *= graph.probability(nodes[i - 1], nodes[i]);
+    }
+    out.push_back(std::move(seq));
   }
   return out;
 }

@@ -14,10 +14,12 @@
 // likelihoods of all sequences of a given length sum to 1 when every node has
 // a way out. Sequences may revisit a node, never twice in a row.
 //
-// Enumeration is exact best-first search on −log L (Dijkstra-like: costs only
-// grow along a sequence, so complete sequences leave the queue in order of
-// decreasing likelihood); ties are broken by the node indices, so the result
-// is deterministic.
+// Enumeration is exact: the sequences in order of −log L (summed along the
+// sequence), ties broken by the node indices, so the result is deterministic.
+// It proceeds layer by layer, keeping the `count` best prefixes ending at each
+// node, so its memory is bounded by count × nodes × visits (a best-first
+// search over prefixes grows exponentially with `visits` on graphs with many
+// equally likely moves).
 
 #include <map>
 #include <string>
@@ -53,7 +55,7 @@ struct Sequence {
 };
 
 //! The `count` most likely sequences of `visits` moves from `start`, most
-//! likely first (fewer if fewer exist). Exact best-first enumeration.
+//! likely first (fewer if fewer exist). Exact; memory O(count · nodes · visits).
 std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& start, int visits,
                                     int count);
 

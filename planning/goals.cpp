@@ -93,8 +93,14 @@ std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geome
   double perimeter = 0.0;
   for (std::size_t i = 0; i < fp.size(); ++i)
     perimeter += geometry::norm(fp[(i + 1) % fp.size()] - fp[i]);
-  const int n =
-      std::max(1, static_cast<int>(std::ceil(options.density * perimeter / width - 1e-9)));
+  // Bounded work whatever the sizes: at most kMaxSlots slots, each scanned in
+  // at most kMaxScanSteps steps (neither bound binds for furniture-sized
+  // objects and chairs, where the slots are a chair width apart or closer and
+  // the scan steps 2 cm).
+  constexpr double kMaxSlots = 256.0;
+  constexpr double kMaxScanSteps = 400.0;
+  const int n = static_cast<int>(
+      std::clamp(std::ceil(options.density * perimeter / width - 1e-9), 1.0, kMaxSlots));
   const double spacing = perimeter / n;
 
   std::size_t edge = 0;
@@ -121,8 +127,8 @@ std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geome
       return polygon_distance(chair_polygon(facing_origin(q, normal, d), length, width), fp) >=
              approach.gap;
     };
-    const double kScan = 0.02;
     const double limit = length + width + approach.gap + 1.0;
+    const double kScan = std::max(0.02, limit / kMaxScanSteps);
     double lo = 0.0, hi = -1.0;
     for (double d = 0.0; d <= limit; d += kScan) {
       if (clear(d)) {

@@ -115,5 +115,58 @@ expect_err "plan rejects budget" "budget would do nothing here"
 check "reuse unknown technique" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse proof
 expect_err "unknown technique" "--reuse: unknown technique 'proof'"
 
+# Hardening (issue 20, docs/hardening.md), by class.
+# CsvRowsAreNeverDropped: a header is exactly the column names; any other
+# first line is data and is refused with its line number.
+for first in 'nan,1,1' 'inf,0,0' '1e400,0,0' 'x;y;theta' 'X,Y,THETA' 'x,y'; do
+  printf '%s\n2.2,1.2,0\n' "$first" >"$tmp/first.csv"
+  check "CsvRowsAreNeverDropped collide '$first'" 2 "$bin" collide "$bed" --poses "$tmp/first.csv"
+  expect_err "CsvRowsAreNeverDropped '$first' names line 1" "first.csv: line 1"
+done
+printf ' x , y ,theta\n2.2,1.2,0\n' >"$tmp/spaced.csv"
+check "CsvRowsAreNeverDropped spaced header" 0 "$bin" collide "$bed" --poses "$tmp/spaced.csv"
+[ "$(wc -l <"$tmp/out")" = 2 ] || { echo "FAIL spaced header: expected 2 lines"; fails=$((fails+1)); }
+printf 'nan,0,0,1,0,0\n' | "$bin" rs --radius 1 >"$tmp/out" 2>"$tmp/err"
+[ $? = 2 ] || { echo "FAIL CsvRowsAreNeverDropped rs: nan row not refused"; fails=$((fails+1)); }
+expect_err "CsvRowsAreNeverDropped rs names line 1" "stdin: line 1, field 1"
+# RsAnswersAreRightOrRefused: radius and coordinates within the format's limits.
+printf '0,0,0,1,0,0\n' >"$tmp/one.csv"
+for r in 1e12 1e-300 0.0001 2001; do
+  check "RsAnswersAreRightOrRefused radius $r" 2 "$bin" rs --radius "$r" --pairs "$tmp/one.csv"
+  expect_err "RsAnswersAreRightOrRefused radius $r message" "--radius: must be within"
+done
+for r in 0.001 2000; do
+  check "RsAnswersAreRightOrRefused radius $r" 0 "$bin" rs --radius "$r" --pairs "$tmp/one.csv"
+  expect_out "RsAnswersAreRightOrRefused radius $r straight" "1,S+,1"
+done
+printf '1e200,0,0,1,0,0\n' >"$tmp/far.csv"
+check "RsAnswersAreRightOrRefused coordinates 1e200" 2 "$bin" rs --radius 1 --pairs "$tmp/far.csv"
+expect_err "RsAnswersAreRightOrRefused 1e200 names the field" "line 1, field 1 (x0)"
+# LateChecksComeFirst: a directory as input, an unwritable --out, big room coordinates.
+check "LateChecksComeFirst --poses directory" 2 "$bin" collide "$bed" --poses "$tmp"
+expect_err "LateChecksComeFirst directory named" "is a directory"
+check "LateChecksComeFirst --pairs directory" 2 "$bin" rs --radius 1 --pairs "$tmp"
+check "LateChecksComeFirst scene directory" 2 "$bin" validate "$tmp"
+touch "$tmp/afile"
+check "LateChecksComeFirst --out under a file" 2 "$bin" design "$bed" --out "$tmp/afile/sub" --iterations 1
+expect_err "LateChecksComeFirst --out named" "afile/sub"
+sed 's/\[4.5, 0\], \[4.5, 4.0\], \[0, 4.0\]/[1500, 0], [1500, 4.0], [0, 4.0]/' "$bed" >"$tmp/km.json"
+grep -q 1500 "$tmp/km.json" || { echo "FAIL: km.json not made"; fails=$((fails+1)); }
+check "LateChecksComeFirst room beyond 1 km" 2 "$bin" validate "$tmp/km.json"
+expect_err "LateChecksComeFirst room pointer" "/room/polygon/1/0: must be within"
+# StdoutWriteErrorsAreExitOne: every subcommand checks its output.
+if [ -w /dev/full ]; then
+  for cmd in "validate $bed" "collide $bed --poses $tmp/poses.csv" "rs --radius 0.7 --pairs $tmp/pairs.csv" \
+             "plan $bed --from 0.9,1.2,0 --to 2.0,1.2,0" "tour $bed --sequence door,tv" "--help" "validate --help"; do
+    # shellcheck disable=SC2086
+    "$bin" $cmd >/dev/full 2>"$tmp/err"; got=$?
+    if [ "$got" != 1 ] || ! grep -q "cannot write to standard output" "$tmp/err"; then
+      echo "FAIL StdoutWriteErrorsAreExitOne '$cmd': exit $got"; sed 's/^/  /' "$tmp/err"; fails=$((fails+1))
+    else
+      echo "ok   StdoutWriteErrorsAreExitOne '$cmd'"
+    fi
+  done
+fi
+
 if [ "$fails" -ne 0 ]; then echo "$fails failure(s)"; exit 1; fi
 echo "all CLI checks passed"

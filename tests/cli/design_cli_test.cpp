@@ -1,6 +1,7 @@
 // `hrspace design` end to end: exit statuses (2 on bad input, 130 after
-// Ctrl-C with the best design so far written), --designs K with its contact
-// sheet, and no progress output when stderr is not a terminal.
+// Ctrl-C, 128 + signal after SIGTERM or SIGHUP, with the best design so far
+// written), --designs K with its contact sheet, stale outputs of an earlier
+// run, and no progress output when stderr is not a terminal.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -92,6 +93,80 @@ TEST(DesignCli, CtrlCWritesTheBestDesignSoFarAndExits130) {
   EXPECT_LT(report["iterations_run"].get<int>(), 100000);
   EXPECT_TRUE(fs::exists(out / "layout.json"));
   EXPECT_TRUE(fs::exists(out / "design.svg"));
+}
+
+//! Starts a long design into `out`, sends `sig` after `ms`, returns the exit status.
+int design_stopped_by(int sig, const fs::path& out, int ms = 2500) {
+  const pid_t pid = fork();
+  if (pid < 0) return -2;
+  if (pid == 0) {
+    const std::string o = out.string();
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(kBin.c_str(), kBin.c_str(), "design", kBedroom.c_str(), "--out", o.c_str(),
+          "--iterations", "100000", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(ms));
+  kill(pid, sig);
+  int status = 0;
+  if (waitpid(pid, &status, 0) != pid) return -3;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Hardening (issue 20): SIGTERM and SIGHUP stop like Ctrl-C.
+TEST(DesignCli, FaultsLoseNoData_SigtermAndSighupWriteTheBestDesign) {
+  for (const int sig : {SIGTERM, SIGHUP}) {
+    const fs::path out = fs::temp_directory_path() / ("hrspace_cli_sig" + std::to_string(sig));
+    fs::remove_all(out);
+    EXPECT_EQ(design_stopped_by(sig, out), 128 + sig);
+    std::ifstream in(out / "report.json");
+    ASSERT_TRUE(in.good()) << sig;
+    EXPECT_TRUE(nlohmann::json::parse(in)["stopped"].get<bool>());
+    for (const auto& e : fs::directory_iterator(out))  // no temporary left behind
+      EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+  }
+}
+
+// Hardening: a rerun with fewer designs removes the earlier run's extra ones;
+// foreign files in a numbered directory are refused before any work.
+TEST(DesignCli, FaultsLoseNoData_StaleOutputsAreRemoved) {
+  const fs::path out = fs::temp_directory_path() / "hrspace_cli_stale";
+  fs::remove_all(out);
+  ASSERT_EQ(run("design " + kBedroom + " --out " + out.string() + " --designs 3 --iterations 1"),
+            0);
+  ASSERT_TRUE(fs::exists(out / "3" / "layout.json"));
+  std::string err;
+  ASSERT_EQ(run("design " + kBedroom + " --out " + out.string() + " --designs 2 --iterations 1",
+                &err),
+            0);
+  EXPECT_FALSE(fs::exists(out / "3"));
+  EXPECT_TRUE(fs::exists(out / "2" / "layout.json"));
+  EXPECT_NE(err.find("removed 1 stale output"), std::string::npos) << err;
+  ASSERT_EQ(run("design " + kBedroom + " --out " + out.string() + " --iterations 1"), 0);
+  EXPECT_FALSE(fs::exists(out / "1"));
+  EXPECT_FALSE(fs::exists(out / "contact_sheet.svg"));
+  EXPECT_TRUE(fs::exists(out / "layout.json"));
+  fs::create_directories(out / "7");
+  std::ofstream(out / "7" / "notes.txt") << "mine";
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out.string() + " --iterations 1", &err), 2);
+  EXPECT_NE(err.find("notes.txt"), std::string::npos) << err;
+  EXPECT_TRUE(fs::exists(out / "7" / "notes.txt"));
+}
+
+// Hardening: --out is checked before the work, not after it.
+TEST(DesignCli, FaultsLoseNoData_UnwritableOutIsRefusedFirst) {
+  const fs::path file = fs::temp_directory_path() / "hrspace_cli_file";
+  std::ofstream(file) << "x";
+  std::string err;
+  const auto t0 = std::chrono::steady_clock::now();
+  EXPECT_EQ(run("design " + kBedroom + " --out " + (file / "sub").string() +
+                    " --iterations 100000",
+                &err),
+            2);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
+  fs::remove(file);
 }
 
 }  // namespace

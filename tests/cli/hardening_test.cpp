@@ -1,0 +1,177 @@
+// Hostile inputs, one test per class of issue 20 (docs/hardening.md): every
+// bad scene is refused with one line "FILE: /pointer: what" (InputError),
+// never a crash, and the inner loops that used to blow up on small inputs
+// (sequence enumeration, goal-pose generation) stay bounded.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "geometry/error.h"
+#include "geometry/scene.h"
+#include "optimize/sequences.h"
+#include "planning/goals.h"
+
+namespace {
+
+using nlohmann::json;
+using hrs::geometry::parse_scene;
+using hrs::geometry::Scene;
+
+json bedroom() {
+  std::ifstream in(std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json");
+  return json::parse(in);
+}
+
+//! The message of the InputError parse_scene throws for `j` ("" if none).
+std::string refusal(const json& j) {
+  try {
+    parse_scene(j.dump(), "hostile.json");
+  } catch (const hrs::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+//! Expects `j` refused with one line naming the file and `pointer`.
+void expect_refused(const json& j, const std::string& pointer) {
+  const std::string what = refusal(j);
+  EXPECT_EQ(what.rfind("hostile.json: " + pointer + ": ", 0), 0u)
+      << "expected a refusal at " << pointer << ", got: '" << what << "'";
+  EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+}
+
+TEST(Hardening, ExtremeMagnitudesAreRefused) {
+  const std::pair<std::string, json> cases[] = {
+      {"/objects/0/pose/0", 1e16},   {"/objects/0/pose/1", -1e200}, {"/objects/0/pose/2", 1e16},
+      {"/objects/0/size/0", 1e-16},  {"/objects/0/size/1", 1e-4},   {"/door/width", 1e300},
+      {"/door/clear_depth", 1e-300}, {"/wheelchair/length", 1e6},   {"/wheelchair/width", 1e-9},
+      {"/wheelchair/turning_radius", 1e6}, {"/wheelchair/turning_radius", 1e-300},
+  };
+  for (const auto& [pointer, value] : cases) {
+    json j = bedroom();
+    j[json::json_pointer(pointer)] = value;
+    SCOPED_TRACE(pointer);
+    expect_refused(j, pointer);
+  }
+  json room = bedroom();
+  room["room"] = {{"polygon", {{0, 0}, {2000, 0}, {2000, 2000}, {0, 2000}}}};
+  expect_refused(room, "/room/polygon/1/0");
+  json big = bedroom();
+  big["room"] = {{"size", {1500, 4}}};
+  expect_refused(big, "/room/size/0");
+  json weights = bedroom();
+  weights["weights"] = {{"path", {1e308, 1, 1}}};
+  expect_refused(weights, "/weights/path/0");
+  json relation = bedroom();
+  relation["relations"] = {{{"a", "tv"}, {"b", "bed"}, {"distance", 1e308}}};
+  expect_refused(relation, "/relations/0/distance");
+  relation["relations"] = {{{"a", "tv"}, {"b", "bed"}, {"distance", 1}, {"weight", 1e308}}};
+  expect_refused(relation, "/relations/0/weight");
+  json gap = bedroom();
+  gap["objects"][0]["approach"] = {{"gap", 1e6}};
+  expect_refused(gap, "/objects/0/approach/gap");
+  // A polygon footprint whose edge is below a millimetre.
+  json tiny = bedroom();
+  tiny["objects"][0].erase("size");
+  tiny["objects"][0]["polygon"] = {{0, 0}, {1e-9, 0}, {0, 1}};
+  expect_refused(tiny, "/objects/0/polygon/1");
+}
+
+TEST(Hardening, DeepNestingIsRefused) {
+  for (const int depth : {100000, 5000, 65}) {
+    const std::string text = std::string(depth, '[') + std::string(depth, ']');
+    try {
+      parse_scene(text, "deep.json");
+      ADD_FAILURE() << depth << " levels accepted";
+    } catch (const hrs::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("nested deeper"), std::string::npos) << e.what();
+    }
+  }
+  // Brackets inside strings do not count; a deep comment within the limit is fine.
+  json j = bedroom();
+  j["name"] = std::string(500, '[');
+  json deep = json::array();
+  for (int i = 0; i < 50; ++i) deep = json::array({deep});
+  j["comment"] = deep;
+  EXPECT_EQ(refusal(j), "");
+}
+
+TEST(Hardening, NonsenseIsRefused) {
+  json outside = bedroom();
+  outside["door"]["start"] = {-5, -5, 0};
+  expect_refused(outside, "/door/start");
+  json in_fixed = bedroom();  // the closet is fixed, at (0.31, 2.6)
+  in_fixed["door"]["start"] = {0.5, 2.6, 0};
+  expect_refused(in_fixed, "/door/start");
+  json huge_chair = bedroom();
+  huge_chair["wheelchair"]["length"] = 10.0;
+  expect_refused(huge_chair, "/wheelchair/length");
+  json wide_turn = bedroom();  // 4.5 x 4 m room: at most 2.25 m
+  wide_turn["wheelchair"]["turning_radius"] = 3.0;
+  expect_refused(wide_turn, "/wheelchair/turning_radius");
+  json blocked = bedroom();  // the door is at (1, 0), clear zone 0.9 x 1.2 m
+  blocked["objects"][0]["fixed"] = true;
+  blocked["objects"][0]["size"] = {0.5, 0.5};
+  blocked["objects"][0]["pose"] = {1.0, 0.6, 0.0};
+  expect_refused(blocked, "/objects/0/pose");
+  json limits = bedroom();
+  limits["activity"]["visits"] = 101;
+  expect_refused(limits, "/activity/visits");
+  limits["activity"]["visits"] = 3;
+  limits["activity"]["sequences"] = 1001;
+  expect_refused(limits, "/activity/sequences");
+  // No sequence of the requested length: accepted by the reader, refused by design.
+  json dead_end = bedroom();
+  dead_end["activity"]["transitions"] = {{"door", {{"bed", 1.0}}}};
+  const Scene s = parse_scene(dead_end.dump(), "hostile.json");
+  try {
+    hrs::geometry::require_sequences(s, "hostile.json");
+    ADD_FAILURE() << "no sequence of 3 visits accepted";
+  } catch (const hrs::InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("hostile.json: /activity/visits: ", 0), 0u) << e.what();
+  }
+  // The shipped scenes satisfy every limit.
+  EXPECT_EQ(refusal(bedroom()), "");
+}
+
+TEST(Hardening, ResourceBlowUpsAreBounded) {
+  // Six equally likely nodes: best-first search over prefixes needed
+  // gigabytes at 30 visits; the layered enumeration needs M x nodes x visits.
+  hrs::geometry::Activity act;
+  const char* ids[] = {"a", "b", "c", "d", "e", "f"};
+  for (const char* from : {"door", "a", "b", "c", "d", "e", "f"}) {
+    for (const char* to : ids) {
+      if (std::string(from) != to) act.transitions[from][to] = 1.0;
+    }
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto top = hrs::optimize::top_sequences(hrs::optimize::AoGraph(act), "door", 100, 1000);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
+  ASSERT_EQ(top.size(), 1000u);
+  EXPECT_EQ(top.front().nodes.size(), 101u);
+  // Lexicographic among equals: a, b, a, b, ... first.
+  EXPECT_EQ(top.front().nodes[1], "a");
+  EXPECT_EQ(top.front().nodes[2], "b");
+  for (std::size_t i = 1; i < top.size(); ++i) EXPECT_LT(top[i - 1].nodes, top[i].nodes);
+
+  // Goal poses with the largest gap and chair the format allows: bounded work.
+  json j = bedroom();
+  j["room"] = {{"size", {1000, 1000}}};
+  j["door"] = {{"center", {1, 0}}, {"width", 0.9}};
+  j["wheelchair"] = {{"length", 1.1}, {"width", 0.001}, {"turning_radius", 0.7}};
+  j["objects"] = {{{"id", "t"}, {"size", {900, 900}}, {"pose", {500, 500, 0}},
+                   {"approach", {{"gap", 2000}}}}};
+  j["activity"] = {{"transitions", {{"door", {{"t", 1.0}}}}}, {"visits", 1}};
+  j.erase("relations");
+  const Scene s = parse_scene(j.dump(), "big.json");
+  const auto g0 = std::chrono::steady_clock::now();
+  const auto goals = hrs::planning::local_goal_poses(s, s.objects[0]);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - g0).count(), 10.0);
+  EXPECT_LE(goals.size(), 256u);
+}
+
+}  // namespace
