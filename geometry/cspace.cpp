@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -232,6 +233,8 @@ void CSpace::place_object(int index) {
 }
 
 void CSpace::move_object(int index, const Pose2& pose) {
+  assert(index >= 0 && index < object_count() && "move_object: no such object");
+  assert(std::isfinite(pose.x) && std::isfinite(pose.y) && std::isfinite(pose.theta));
   ObjectState& s = objects_.at(index);
   const bool rotated = pose.theta != s.pose.theta;
   s.pose = pose;

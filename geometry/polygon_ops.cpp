@@ -113,13 +113,6 @@ bool interiors_overlap(const Polygon& a, const Polygon& b) {
   return !common.empty();
 }
 
-double boundary_distance(Vec2 p, const Polygon& polygon) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < polygon.size(); ++i)
-    best = std::min(best, point_segment_distance(p, polygon[i], polygon[(i + 1) % polygon.size()]));
-  return best;
-}
-
 std::vector<Polygon> convex_partition(const Polygon& polygon) {
   if (is_convex_ccw(polygon)) return {polygon};
   using Traits = CGAL::Partition_traits_2<Epick>;

@@ -17,10 +17,10 @@ bool is_counterclockwise(const Polygon& polygon);
 bool polygon_inside(const Polygon& inner, const Polygon& outer);
 //! True if the open interiors of two simple polygons intersect.
 bool interiors_overlap(const Polygon& a, const Polygon& b);
-//! Exact signed distance test: distance from p to the polygon's boundary.
-double boundary_distance(Vec2 p, const Polygon& polygon);
-//! Convex pieces whose union is the simple counter-clockwise polygon
-//! (Hertel–Mehlhorn on an exact triangulation); a convex input is returned as is.
+//! Convex pieces whose union is the simple counter-clockwise polygon: CGAL's
+//! optimal convex partition (fewest pieces; Greene's dynamic program, O(n⁴)
+//! for n vertices, cheap for furniture outlines); a convex input is returned
+//! as is.
 std::vector<Polygon> convex_partition(const Polygon& polygon);
 //! Convex hull in doubles (monotone chain), counter-clockwise, of at least 3
 //! points. Its vertices are input points and rounding in the orientation

@@ -31,7 +31,7 @@ constexpr std::string_view kFormat = "hrspace-scene/1";
 constexpr double kBoundaryTolerance =
     1e-6;                                  //!< door centre on the boundary, door width on its edge
 constexpr double kRowSumTolerance = 1e-6;  //!< AO rows sum to 1
-constexpr std::string_view kStartNode = "door";
+constexpr std::string_view kStartNode = kStartNodeId;
 constexpr std::string_view kComment = "comment";
 constexpr std::array<std::string_view, 4> kSideNames{"front", "back", "left", "right"};
 
@@ -254,7 +254,8 @@ class Reader {
     if (!j.is_number_integer()) fail(ptr, "must be an integer, got " + shown(j));
     const bool too_big = j.is_number_unsigned() ? j.get<std::uint64_t>() > std::uint64_t(max)
                                                 : j.get<std::int64_t>() > std::int64_t{max};
-    if (too_big) fail(ptr, "must be <= " + std::to_string(max) + " (limit of the format), got " + j.dump());
+    if (too_big)
+      fail(ptr, "must be <= " + std::to_string(max) + " (limit of the format), got " + j.dump());
     const auto v = j.get<std::int64_t>();
     if (v < min) fail(ptr, "must be >= " + std::to_string(min) + ", got " + std::to_string(v));
     return static_cast<int>(v);
@@ -339,10 +340,9 @@ class Reader {
       const auto s = size2(*size, child(ptr, "size"), "[width, depth]");
       for (std::size_t i = 0; i < 2; ++i) {
         if (s[i] > limits::kCoordinate) {
-          fail(child(child(ptr, "size"), i), "must be within [" + num(limits::kMinLength) + ", " +
-                                                 num(limits::kCoordinate) +
-                                                 "] (coordinate limit of the format), got " +
-                                                 num(s[i]));
+          fail(child(child(ptr, "size"), i),
+               "must be within [" + num(limits::kMinLength) + ", " + num(limits::kCoordinate) +
+                   "] (coordinate limit of the format), got " + num(s[i]));
         }
       }
       room.size = s;
@@ -398,9 +398,9 @@ class Reader {
                num(hi.y - lo.y) + " m)");
     }
     if (w.turning_radius > 0.5 * extent) {
-      fail(child(ptr, "turning_radius"),
-           "must be at most half the room's larger extent (" + num(0.5 * extent) +
-               " m: a U-turn fits), got " + num(w.turning_radius));
+      fail(child(ptr, "turning_radius"), "must be at most half the room's larger extent (" +
+                                             num(0.5 * extent) + " m: a U-turn fits), got " +
+                                             num(w.turning_radius));
     }
     return w;
   }
@@ -619,10 +619,9 @@ class Reader {
     check_keys(j, ptr, {"path", "interior"});
     Weights w;
     if (const Json* p = optional(j, "path")) {
-      fixed_array(*p, child(ptr, "path"), 3, "[length, rotation, clearance]",
-                  [&](const Json& e, const std::string& ep, std::size_t i) {
-                    w.path[i] = weight(e, ep);
-                  });
+      fixed_array(
+          *p, child(ptr, "path"), 3, "[length, rotation, clearance]",
+          [&](const Json& e, const std::string& ep, std::size_t i) { w.path[i] = weight(e, ep); });
     }
     if (const Json* p = optional(j, "interior")) {
       fixed_array(*p, child(ptr, "interior"), 2, "[distance, rotation]",
@@ -974,10 +973,9 @@ int longest_walk(const Activity& activity, int cap) {
 void require_sequences(const Scene& scene, const std::string& label) {
   const int longest = longest_walk(scene.activity, scene.activity.visits);
   if (longest < scene.activity.visits) {
-    throw InputError(one_line(label + ": /activity/visits: no sequence of " +
-                              std::to_string(scene.activity.visits) +
-                              " visits leaves the door (the AO graph's longest has " +
-                              std::to_string(longest) + ")"));
+    throw InputError(one_line(
+        label + ": /activity/visits: no sequence of " + std::to_string(scene.activity.visits) +
+        " visits leaves the door (the AO graph's longest has " + std::to_string(longest) + ")"));
   }
 }
 

@@ -19,19 +19,23 @@ namespace hrs::geometry {
 
 using Polygon = std::vector<Vec2>;  //!< vertices, counter-clockwise, not closed
 
+//! Id of the AO graph's start node, the door: first node of every sequence
+//! and tour, reserved (no object may use it).
+inline constexpr std::string_view kStartNodeId = "door";
+
 //! Numeric and size limits of the format (docs/scene-format.md, "Limits"):
 //! within them every geometric construction of hrspace stays sound (no
 //! vertex collapses under rounding, CGAL's filters never overflow) and every
 //! computation on a scene is bounded in time and memory.
 namespace limits {
-inline constexpr double kCoordinate = 1000.0;  //!< |x|, |y| of every point and position, m
-inline constexpr double kAngle = 1000.0;       //!< |angle| of every heading or angle, rad
-inline constexpr double kMinLength = 1e-3;     //!< smallest size, width, depth, edge, radius, m
-inline constexpr double kLength = 2000.0;      //!< largest length or distance, m
-inline constexpr double kWeight = 1e6;         //!< largest weight
-inline constexpr int kVisits = 100;            //!< largest activity.visits
-inline constexpr int kSequences = 1000;        //!< largest activity.sequences (M)
-inline constexpr std::size_t kObjects = 100;   //!< most objects
+inline constexpr double kCoordinate = 1000.0;    //!< |x|, |y| of every point and position, m
+inline constexpr double kAngle = 1000.0;         //!< |angle| of every heading or angle, rad
+inline constexpr double kMinLength = 1e-3;       //!< smallest size, width, depth, edge, radius, m
+inline constexpr double kLength = 2000.0;        //!< largest length or distance, m
+inline constexpr double kWeight = 1e6;           //!< largest weight
+inline constexpr int kVisits = 100;              //!< largest activity.visits
+inline constexpr int kSequences = 1000;          //!< largest activity.sequences (M)
+inline constexpr std::size_t kObjects = 100;     //!< most objects
 inline constexpr std::size_t kVertices = 1000;   //!< most vertices of a polygon
 inline constexpr std::size_t kRelations = 1000;  //!< most relations
 inline constexpr int kDepth = 64;                //!< deepest nesting of JSON arrays and objects

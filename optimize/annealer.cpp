@@ -31,27 +31,105 @@ double temperature_at(const AnnealOptions& options, int k) {
   return geometric(options.t_start, options.t_end, k, options.iterations);
 }
 
+namespace {
+
+//! One proposal for `object` at iteration k. Draws in a fixed order: the
+//! kind of move, then its parameters (the object was drawn before).
+Move propose_move(const AnnealOptions& options, const Pose2& from, int object, int k,
+                  std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
+  constexpr double kPi = std::numbers::pi;
+  const double step = geometric(options.step_start, options.step_end, k, options.iterations);
+  const double shrink = options.step_start > 0.0 ? step / options.step_start : 1.0;
+  Move move;
+  move.object = object;
+  move.from = from;
+  move.to = from;
+  move.rotation = unit(rng) < options.rotate_probability;
+  if (move.rotation) {
+    const double kind = unit(rng);
+    const double r = unit(rng);
+    double turn;
+    if (kind < options.quarter_turn_probability) {
+      turn = r < 1.0 / 3.0 ? kPi / 2 : (r < 2.0 / 3.0 ? -kPi / 2 : kPi);
+    } else {
+      turn = (2.0 * r - 1.0) * kPi * shrink;
+    }
+    move.to.theta = geometry::wrap_angle(from.theta + turn);
+    return move;
+  }
+  const double jump = unit(rng), rx = unit(rng), ry = unit(rng);
+  if (options.bounds && jump < options.jump_probability * shrink) {
+    // A jump anywhere in the bounds (a symmetric proposal): escapes places
+    // that small steps cannot leave while the chain is hot.
+    const auto& b = *options.bounds;
+    move.to.x = b[0] + rx * (b[2] - b[0]);
+    move.to.y = b[1] + ry * (b[3] - b[1]);
+    move.jump = true;
+  } else {
+    move.to.x += (2.0 * rx - 1.0) * step;
+    move.to.y += (2.0 * ry - 1.0) * step;
+  }
+  return move;
+}
+
+//! The chain's state between iterations.
+struct Chain {
+  std::vector<Pose2> poses;
+  double current = 0.0;
+};
+
+//! Checks, costs and decides one proposal with the uniform `u` drawn before
+//! it was costed; fills the entry's validity, cost and decision.
+void decide(const Move& move, double u, Chain& chain, TraceEntry& e, AnnealResult& result,
+            const AnnealCallbacks& callbacks) {
+  auto layout_valid = [&](const std::vector<Pose2>& p) {
+    return !callbacks.layout_valid || callbacks.layout_valid(p);
+  };
+  chain.poses[move.object] = move.to;
+  e.valid = callbacks.move_valid(chain.poses, move.object);
+  if (!e.valid) {
+    chain.poses[move.object] = move.from;
+    e.proposed_cost = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  ++result.valid_proposals;
+  const double proposed = callbacks.cost(chain.poses, move);
+  e.proposed_cost = proposed;
+  e.accepted = metropolis_accept(proposed - chain.current, e.temperature, u);
+  if (!e.accepted) {
+    chain.poses[move.object] = move.from;
+    if (callbacks.rejected) callbacks.rejected(move);
+    return;
+  }
+  ++result.accepted;
+  chain.current = proposed;
+  if (chain.current < result.best_cost && layout_valid(chain.poses)) {
+    result.best_cost = chain.current;
+    result.best = chain.poses;
+    result.best_valid = true;
+    if (callbacks.new_best) callbacks.new_best();
+  }
+}
+
+}  // namespace
+
 AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
                     const AnnealOptions& options, const AnnealCallbacks& callbacks,
                     std::mt19937_64& rng, const std::atomic<bool>* stop) {
   assert(callbacks.move_valid && callbacks.cost);
   assert(movable.size() == poses.size());
-  constexpr double kPi = std::numbers::pi;
-  constexpr double kInf = std::numeric_limits<double>::infinity();
   std::vector<int> candidates;
   for (std::size_t i = 0; i < movable.size(); ++i)
     if (movable[i]) candidates.push_back(static_cast<int>(i));
-  auto layout_valid = [&](const std::vector<Pose2>& p) {
-    return !callbacks.layout_valid || callbacks.layout_valid(p);
-  };
 
   AnnealResult result;
-  double current = callbacks.cost(poses, Move{});
-  result.initial_cost = current;
-  result.best = poses;
-  result.best_cost = kInf;
-  if (layout_valid(poses)) {
-    result.best_cost = current;
+  Chain chain{std::move(poses), 0.0};
+  chain.current = callbacks.cost(chain.poses, Move{});
+  result.initial_cost = chain.current;
+  result.best = chain.poses;
+  result.best_cost = std::numeric_limits<double>::infinity();
+  if (!callbacks.layout_valid || callbacks.layout_valid(chain.poses)) {
+    result.best_cost = chain.current;
     result.best_valid = true;
     if (callbacks.new_best) callbacks.new_best();
   }
@@ -65,78 +143,22 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     TraceEntry e;
     e.iteration = k;
     e.temperature = temperature_at(options, k);
-    const double step = geometric(options.step_start, options.step_end, k, options.iterations);
-    const double shrink = options.step_start > 0.0 ? step / options.step_start : 1.0;
-
-    // Draws in a fixed order: object, kind, then the move's parameters.
     const int object =
         candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
-    Move move;
-    move.object = object;
-    move.from = poses[object];
-    move.to = move.from;
-    move.rotation = unit(rng) < options.rotate_probability;
-    if (move.rotation) {
-      const double kind = unit(rng);
-      const double r = unit(rng);
-      double turn;
-      if (kind < options.quarter_turn_probability) {
-        turn = r < 1.0 / 3.0 ? kPi / 2 : (r < 2.0 / 3.0 ? -kPi / 2 : kPi);
-      } else {
-        turn = (2.0 * r - 1.0) * kPi * shrink;
-      }
-      move.to.theta = geometry::wrap_angle(move.from.theta + turn);
-    } else {
-      const double jump = unit(rng), rx = unit(rng), ry = unit(rng);
-      if (options.bounds && jump < options.jump_probability * shrink) {
-        // A jump anywhere in the bounds (a symmetric proposal): escapes
-        // places that small steps cannot leave while the chain is hot.
-        const auto& b = *options.bounds;
-        move.to.x = b[0] + rx * (b[2] - b[0]);
-        move.to.y = b[1] + ry * (b[3] - b[1]);
-        move.jump = true;
-      } else {
-        move.to.x += (2.0 * rx - 1.0) * step;
-        move.to.y += (2.0 * ry - 1.0) * step;
-      }
-    }
-    const double u = unit(rng);
+    const Move move = propose_move(options, chain.poses[object], object, k, rng, unit);
+    const double u = unit(rng);  // drawn before the proposal is costed
     e.object = object;
     e.rotation = move.rotation;
     e.jump = move.jump;
-
-    poses[object] = move.to;
-    e.valid = callbacks.move_valid(poses, object);
-    if (!e.valid) {
-      poses[object] = move.from;
-      e.proposed_cost = std::numeric_limits<double>::quiet_NaN();
-    } else {
-      ++result.valid_proposals;
-      const double proposed = callbacks.cost(poses, move);
-      e.proposed_cost = proposed;
-      e.accepted = metropolis_accept(proposed - current, e.temperature, u);
-      if (e.accepted) {
-        ++result.accepted;
-        current = proposed;
-        if (current < result.best_cost && layout_valid(poses)) {
-          result.best_cost = current;
-          result.best = poses;
-          result.best_valid = true;
-          if (callbacks.new_best) callbacks.new_best();
-        }
-      } else {
-        poses[object] = move.from;
-        if (callbacks.rejected) callbacks.rejected(move);
-      }
-    }
-    e.current_cost = current;
+    decide(move, u, chain, e, result, callbacks);
+    e.current_cost = chain.current;
     e.best_cost = result.best_cost;
     ++result.proposals;
     result.trace.push_back(e);
     if (callbacks.progress) callbacks.progress(e);
   }
-  result.final_poses = poses;
-  result.final_cost = current;
+  result.final_poses = chain.poses;
+  result.final_cost = chain.current;
   return result;
 }
 

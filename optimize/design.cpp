@@ -23,28 +23,7 @@ double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-
 }  // namespace
-
-bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour,
-                  planning::LegMeasures* measures) {
-  if (!tour.found) return true;
-  planning::MotionValidator validator(cspace, radius);
-  for (std::size_t i = 0; i < tour.legs.size(); ++i) {
-    const auto& leg = tour.legs[i];
-    const double length = leg.path.length();
-    const double prefix = measures ? measures->certified_prefix(leg, kRecheckPiece)
-                                   : validator.certified_prefix(leg.from, leg.path, kRecheckPiece);
-    if (prefix < length - 1e-9) {
-      tour.found = false;
-      tour.legs.clear();
-      tour.metrics = {};
-      tour.stats.depth = static_cast<int>(i);
-      return false;
-    }
-  }
-  return true;
-}
 
 std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
   std::uint64_t h = splitmix64(seed);
@@ -113,8 +92,8 @@ class TourRound {
     pool_.run(m, [&](int k) {
       planners_[k]->set_seed(tour_seed(options_.seed, iteration, k));
       tours_[k] = planners_[k]->plan((*sequences_)[k].nodes);
-      invalidated_[k] = recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k],
-                                     reuse_ ? reuse_->measures() : nullptr)
+      invalidated_[k] = planning::recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k],
+                                               reuse_ ? reuse_->measures() : nullptr)
                             ? 0
                             : 1;
     });
@@ -138,153 +117,210 @@ class TourRound {
 
 }  // namespace
 
-DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
-                    const std::atomic<bool>* stop,
-                    const std::function<void(const DesignStep&)>& progress) {
-  const auto t0 = Clock::now();
-  DesignResult result;
-  result.sequences = scene_sequences(scene);
-  const CostModel model(scene, result.sequences);
+namespace {
 
-  TourRound round(scene, options, result.sequences);
-  geometry::Scene& work = round.work();
-  geometry::CSpace& cspace = round.cspace();
-  planning::ReusePlanner* reuse = round.reuse();
-  std::vector<planning::Tour>& tours = round.tours();
-  result.threads = round.threads();
-
-  std::vector<Pose2> poses;
-  std::vector<bool> movable;
-  for (const auto& o : scene.objects) {
-    poses.push_back(o.pose);
-    movable.push_back(!o.fixed);
+//! One design run (paper §III-E with the tours of §III-C): the annealer's
+//! callbacks on one object, each step a named member. run() is design().
+class DesignRun {
+ public:
+  DesignRun(const geometry::Scene& scene, const DesignOptions& options,
+            const std::atomic<bool>* stop, const std::function<void(const DesignStep&)>& progress)
+      : t0_(Clock::now()),
+        scene_(scene),
+        options_(options),
+        stop_(stop),
+        progress_(progress),
+        sequences_(scene_sequences(scene)),
+        model_(scene, sequences_),
+        round_(scene, options, sequences_),
+        work_(round_.work()),
+        cspace_(round_.cspace()),
+        tours_(round_.tours()) {
+    result_.sequences = sequences_;
+    result_.threads = round_.threads();
+    for (const auto& o : scene.objects) {
+      poses_.push_back(o.pose);
+      movable_.push_back(!o.fixed);
+    }
+    // With all path weights 0 the cost does not depend on the tours: plan
+    // only the initial and the best layout (Fig. 1's "designed without the
+    // chair").
+    const auto& wp = scene.weights.path;
+    plan_every_iteration_ = wp[0] != 0.0 || wp[1] != 0.0 || wp[2] != 0.0;
+    result_.planned_every_iteration = plan_every_iteration_;
   }
 
-  int iteration = 0;  // 0: the initial layout; proposals count from 1
-  double planning_ms = 0.0;
-  std::optional<planning::ReuseCounters> iteration_legs;
-  auto plan_all = [&] {
+  DesignResult run() {
+    plan_current();
+    current_terms_ = model_.evaluate(poses_, tours_);
+    result_.initial = current_terms_;
+    current_tours_ = tours_;
+    const AnnealOptions schedule = make_schedule();
+    std::mt19937_64 rng(options_.seed);
+    const AnnealResult r = anneal(poses_, movable_, schedule, callbacks(), rng, stop_);
+    finish(r);
+    result_.time_total_s = seconds_since(t0_);
+    return std::move(result_);
+  }
+
+ private:
+  //! Plans the M tours of the current layout (round `iteration_`).
+  void plan_current() {
     const auto p0 = Clock::now();
-    if (options.layouts_out) {
-      options.layouts_out->emplace_back();
-      for (int i = 0; i < cspace.object_count(); ++i)
-        options.layouts_out->back().push_back(cspace.object_pose(i));
+    if (options_.layouts_out) {
+      options_.layouts_out->emplace_back();
+      for (int i = 0; i < cspace_.object_count(); ++i)
+        options_.layouts_out->back().push_back(cspace_.object_pose(i));
     }
-    result.tours_invalidated += round.plan(iteration, iteration_legs);
-    planning_ms = 1e3 * seconds_since(p0);
-    result.time_planning_s += planning_ms / 1e3;
-  };
-
-  // With all path weights 0 the cost does not depend on the tours: plan only
-  // the initial and the best layout (Fig. 1's "designed without the chair").
-  const auto& wp = scene.weights.path;
-  const bool plan_every_iteration = wp[0] != 0.0 || wp[1] != 0.0 || wp[2] != 0.0;
-  result.planned_every_iteration = plan_every_iteration;
-
-  plan_all();
-  CostTerms current_terms = model.evaluate(poses, tours);
-  result.initial = current_terms;
-  std::vector<planning::Tour> current_tours = tours;
-  CostTerms proposed_terms;
-
-  AnnealOptions schedule = options.anneal;
-  schedule.iterations = options.iterations;
-  if (!schedule.bounds) {
-    std::array<double, 4> box{1e300, 1e300, -1e300, -1e300};
-    for (const auto& v : scene.room.polygon)
-      box = {std::min(box[0], v.x), std::min(box[1], v.y), std::max(box[2], v.x),
-             std::max(box[3], v.y)};
-    schedule.bounds = box;  // jumps land anywhere in the room's bounding box
+    result_.tours_invalidated += round_.plan(iteration_, iteration_legs_);
+    planning_ms_ = 1e3 * seconds_since(p0);
+    result_.time_planning_s += planning_ms_ / 1e3;
   }
-  schedule.t_start = std::max(1e-6, options.t_start_fraction * current_terms.total());
-  schedule.t_end = schedule.t_start * options.t_end_ratio;
-  result.t_start = schedule.t_start;
-  result.t_end = schedule.t_end;
 
-  AnnealCallbacks cb;
-  cb.move_valid = [&](const std::vector<Pose2>& p, int moved) {
-    const Pose2 old = work.objects[moved].pose;
-    work.objects[moved].pose = p[moved];
-    const bool ok = object_violation(work, moved).empty();
-    work.objects[moved].pose = old;
-    return ok;
-  };
-  cb.cost = [&](const std::vector<Pose2>& p, const Move& move) {
-    if (move.object < 0) return current_terms.total();
-    ++iteration;
-    work.objects[move.object].pose = move.to;
-    cspace.move_object(move.object, move.to);
-    planning_ms = 0.0;
-    if (plan_every_iteration) plan_all();
-    proposed_terms = model.evaluate(p, tours);
-    return proposed_terms.total();
-  };
-  cb.rejected = [&](const Move& move) {
-    work.objects[move.object].pose = move.from;
-    cspace.move_object(move.object, move.from);
-  };
-  cb.layout_valid = [&](const std::vector<Pose2>&) { return layout_violation(work).empty(); };
-  cb.new_best = [&] {
-    // Called for the initial layout (before any proposal) or right after an
-    // accepted proposal: `tours` and the terms belong to the current layout.
-    if (iteration == 0) {
-      result.final = current_terms;
-      result.tours = current_tours;
-    } else {
-      result.final = proposed_terms;
-      result.tours = tours;
+  //! Temperatures from the initial cost (docs/optimize.md), jumps inside
+  //! the room's bounding box unless the options bound them.
+  AnnealOptions make_schedule() {
+    AnnealOptions schedule = options_.anneal;
+    schedule.iterations = options_.iterations;
+    if (!schedule.bounds) {
+      const geometry::Box b = geometry::bounding_box(scene_.room.polygon);
+      schedule.bounds = std::array<double, 4>{b.xmin, b.ymin, b.xmax, b.ymax};
     }
-  };
-  cb.progress = [&](const TraceEntry& e) {
+    schedule.t_start = std::max(1e-6, options_.t_start_fraction * current_terms_.total());
+    schedule.t_end = schedule.t_start * options_.t_end_ratio;
+    result_.t_start = schedule.t_start;
+    result_.t_end = schedule.t_end;
+    return schedule;
+  }
+
+  AnnealCallbacks callbacks() {
+    AnnealCallbacks cb;
+    cb.move_valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
+    cb.cost = [this](const std::vector<Pose2>& p, const Move& move) { return cost(p, move); };
+    cb.rejected = [this](const Move& move) { undo(move); };
+    cb.layout_valid = [this](const std::vector<Pose2>&) { return layout_violation(work_).empty(); };
+    cb.new_best = [this] { new_best(); };
+    cb.progress = [this](const TraceEntry& e) { step_done(e); };
+    return cb;
+  }
+
+  //! The exact checks of one moved object, before any planning.
+  bool move_valid(const std::vector<Pose2>& p, int moved) {
+    const Pose2 old = work_.objects[moved].pose;
+    work_.objects[moved].pose = p[moved];
+    const bool ok = object_violation(work_, moved).empty();
+    work_.objects[moved].pose = old;
+    return ok;
+  }
+
+  //! Applies a proposal to the C-space, tours it and returns its cost.
+  double cost(const std::vector<Pose2>& p, const Move& move) {
+    if (move.object < 0) return current_terms_.total();
+    ++iteration_;
+    work_.objects[move.object].pose = move.to;
+    cspace_.move_object(move.object, move.to);
+    planning_ms_ = 0.0;
+    if (plan_every_iteration_) plan_current();
+    proposed_terms_ = model_.evaluate(p, tours_);
+    return proposed_terms_.total();
+  }
+
+  void undo(const Move& move) {
+    work_.objects[move.object].pose = move.from;
+    cspace_.move_object(move.object, move.from);
+  }
+
+  //! Called for the initial layout (before any proposal) or right after an
+  //! accepted proposal: `tours_` and the terms belong to the current layout.
+  void new_best() {
+    if (iteration_ == 0) {
+      result_.final = current_terms_;
+      result_.tours = current_tours_;
+    } else {
+      result_.final = proposed_terms_;
+      result_.tours = tours_;
+    }
+  }
+
+  //! The trace entry of one iteration; an accepted proposal becomes current.
+  void step_done(const TraceEntry& e) {
     DesignStep step;
     step.anneal = e;
     if (e.valid) {
-      step.proposed = proposed_terms;
-      step.planning_ms = planning_ms;
-      step.planned = plan_every_iteration;
-      if (plan_every_iteration) step.legs = iteration_legs;
+      step.proposed = proposed_terms_;
+      step.planning_ms = planning_ms_;
+      step.planned = plan_every_iteration_;
+      if (plan_every_iteration_) step.legs = iteration_legs_;
     }
     if (e.accepted) {
-      current_terms = proposed_terms;
-      current_tours = tours;
+      current_terms_ = proposed_terms_;
+      current_tours_ = tours_;
     }
-    result.trace.push_back(step);
-    if (progress) progress(step);
-  };
+    result_.trace.push_back(step);
+    if (progress_) progress_(step);
+  }
 
-  std::mt19937_64 rng(options.seed);
-  const AnnealResult r = anneal(poses, movable, schedule, cb, rng, stop);
+  //! The best layout, its tours (toured now when the tours were not planned
+  //! every iteration) and the run's counts.
+  void finish(const AnnealResult& r) {
+    result_.layout = scene_;
+    for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+      result_.layout.objects[i].pose = r.best[i];
+    result_.valid = r.best_valid && layout_violation(result_.layout).empty();
+    if (!r.best_valid) {
+      // No valid layout was ever seen: report the chain's last state.
+      for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+        result_.layout.objects[i].pose = r.final_poses[i];
+      result_.final = current_terms_;
+      result_.tours = current_tours_;
+    }
+    if (!plan_every_iteration_ && r.best_valid) {
+      for (std::size_t i = 0; i < scene_.objects.size(); ++i)
+        cspace_.move_object(static_cast<int>(i), r.best[i]);
+      iteration_ = r.proposals + 1;
+      plan_current();
+      result_.tours = tours_;
+      result_.final = model_.evaluate(r.best, tours_);
+    }
+    result_.proposals = r.proposals;
+    result_.valid_proposals = r.valid_proposals;
+    result_.accepted = r.accepted;
+    result_.stopped = r.stopped;
+    result_.proposed = options_.proposed;
+    if (planning::ReusePlanner* reuse = round_.reuse()) {
+      result_.reuse = options_.reuse.names();
+      result_.counters = reuse->totals();
+    }
+  }
 
-  result.layout = scene;
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) result.layout.objects[i].pose = r.best[i];
-  result.valid = r.best_valid && layout_violation(result.layout).empty();
-  if (!r.best_valid) {
-    // No valid layout was ever seen: report the chain's last state.
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-      result.layout.objects[i].pose = r.final_poses[i];
-    result.final = current_terms;
-    result.tours = current_tours;
-  }
-  if (!plan_every_iteration && r.best_valid) {
-    // Tour the best layout once, for tours.json and the feasible-tour count.
-    for (std::size_t i = 0; i < scene.objects.size(); ++i)
-      cspace.move_object(static_cast<int>(i), r.best[i]);
-    iteration = r.proposals + 1;
-    plan_all();
-    result.tours = tours;
-    result.final = model.evaluate(r.best, tours);
-  }
-  result.proposals = r.proposals;
-  result.valid_proposals = r.valid_proposals;
-  result.accepted = r.accepted;
-  result.stopped = r.stopped;
-  result.proposed = options.proposed;
-  if (reuse) {
-    result.reuse = options.reuse.names();
-    result.counters = reuse->totals();
-  }
-  result.time_total_s = seconds_since(t0);
-  return result;
+  Clock::time_point t0_;
+  const geometry::Scene& scene_;
+  DesignOptions options_;
+  const std::atomic<bool>* stop_;
+  const std::function<void(const DesignStep&)>& progress_;
+  std::vector<Sequence> sequences_;
+  CostModel model_;
+  TourRound round_;
+  geometry::Scene& work_;
+  geometry::CSpace& cspace_;
+  std::vector<planning::Tour>& tours_;
+  std::vector<Pose2> poses_;
+  std::vector<bool> movable_;
+  bool plan_every_iteration_ = true;
+  int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
+  double planning_ms_ = 0.0;
+  std::optional<planning::ReuseCounters> iteration_legs_;
+  CostTerms current_terms_, proposed_terms_;
+  std::vector<planning::Tour> current_tours_;
+  DesignResult result_;
+};
+
+}  // namespace
+
+DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
+                    const std::atomic<bool>* stop,
+                    const std::function<void(const DesignStep&)>& progress) {
+  return DesignRun(scene, options, stop, progress).run();
 }
 
 ReplayResult replay_planning(const geometry::Scene& scene,

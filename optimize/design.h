@@ -33,6 +33,7 @@
 #include "optimize/annealer.h"
 #include "optimize/costs.h"
 #include "optimize/sequences.h"
+#include "planning/recheck.h"
 #include "planning/reuse.h"
 #include "planning/tour.h"
 
@@ -120,18 +121,6 @@ struct ReplayResult {
 ReplayResult replay_planning(const geometry::Scene& scene,
                              const std::vector<std::vector<Pose2>>& layouts,
                              const DesignOptions& options);
-
-//! Pieces (metres) in which recheck_tour() certifies each leg.
-inline constexpr double kRecheckPiece = 0.05;
-
-//! Re-validates a found tour in `cspace` with the continuous checks, every
-//! leg cut into kRecheckPiece pieces, a piece that fails bisected before it
-//! counts (MotionValidator::certified_prefix); a tour with a leg that is not
-//! certified free becomes unfound (stats.depth = the failing leg). Returns
-//! false when it did so. Guards the outputs against planner defects.
-//! With `measures`, the certified prefixes come through it (the same values).
-bool recheck_tour(const geometry::CSpace& cspace, double radius, planning::Tour& tour,
-                  planning::LegMeasures* measures = nullptr);
 
 //! Seed of tour k in planning round `iteration` (0: the initial layout; round r is
 //! the r-th proposal that passed the exact checks, so rejected-before-planning

@@ -169,13 +169,9 @@ const std::vector<std::string>& design_file_names() {
 }
 
 std::string tours_document(const DesignResult& result) {
-  json tours = json::array();
-  for (std::size_t k = 0; k < result.tours.size(); ++k) {
-    json t = json::parse(planning::tour_json(result.tours[k], result.sequences[k].likelihood));
-    if (t.contains("stats")) t["stats"].erase("time_ms");  // timings are not reproducible
-    tours.push_back(std::move(t));
-  }
-  return json{{"tours", tours}}.dump(1) + "\n";
+  std::vector<double> likelihoods;
+  for (const Sequence& s : result.sequences) likelihoods.push_back(s.likelihood);
+  return planning::tours_json(result.tours, likelihoods, /*timings=*/false, /*indent=*/1) + "\n";
 }
 
 std::string report_document(const DesignResult& result, const RunInfo& info) {

@@ -126,7 +126,8 @@ std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& sta
 
 std::vector<Sequence> scene_sequences(const geometry::Scene& scene) {
   const AoGraph graph(scene.activity);
-  return top_sequences(graph, "door", scene.activity.visits, scene.activity.sequences);
+  return top_sequences(graph, std::string(geometry::kStartNodeId), scene.activity.visits,
+                       scene.activity.sequences);
 }
 
 std::map<std::string, double> object_scales(const std::vector<Sequence>& sequences) {

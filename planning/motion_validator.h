@@ -9,6 +9,7 @@
 // One validator per planner instance: it counts its checks, so it is cheap
 // mutable state; the CSpace it reads is shared and never modified here.
 
+#include <cassert>
 #include <cstdint>
 
 #include "geometry/cspace.h"
@@ -23,7 +24,9 @@ using geometry::Pose2;
 class MotionValidator {
  public:
   //! Checks motions in `cspace` with arcs of turning radius `radius`.
-  MotionValidator(const CSpace& cspace, double radius) : cspace_(&cspace), radius_(radius) {}
+  MotionValidator(const CSpace& cspace, double radius) : cspace_(&cspace), radius_(radius) {
+    assert(radius > 0.0 && "MotionValidator: turning radius must be > 0");
+  }
 
   const CSpace& cspace() const { return *cspace_; }
   double radius() const { return radius_; }

@@ -8,7 +8,9 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/cspace.h"
 #include "geometry/pose.h"
+#include "geometry/scene.h"
 #include "planning/tour.h"
 #include "rs/reeds_shepp.h"
 
@@ -48,6 +50,15 @@ class PathDatabase {
   void put(const LegKey& key, const Pose2& from, const Pose2& to, const rs::Path& path,
            std::vector<Pose2> checked = {});
   void erase(const LegKey& key) { entries_.erase(key); }
+  //! True when path_free(e.from, e.path), which held in the layout
+  //! e.checked, provably holds in the current layout of `cspace`: the walls
+  //! never move and the footprint of every object that moved since lies
+  //! (now) farther than `margin` from each point of e.trace. Its old pose
+  //! blocked nothing then and is gone, so no query of the check can change
+  //! to "blocked" (geometry/cspace.h; the margin's terms are in
+  //! ReusePlanner's constructor).
+  static bool still_free(const Entry& e, const geometry::CSpace& cspace,
+                         const geometry::Scene& scene, double margin);
   std::size_t size() const { return entries_.size(); }
 
  private:

@@ -1,6 +1,7 @@
 #include "planning/path_ops.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace hrs::planning {
@@ -15,11 +16,13 @@ void append_segment(std::vector<rs::Segment>& out, const rs::Segment& segment) {
 }
 
 SegmentPieces cut_segment(const rs::Segment& segment, double max_piece) {
+  assert(max_piece > 0.0 && segment.length >= 0.0);
   const int count = std::max(1, static_cast<int>(std::ceil(segment.length / max_piece - 1e-9)));
   return {count, rs::Segment{segment.steer, segment.gear, segment.length / count}};
 }
 
 rs::Path subpath(const rs::Path& path, double s0, double s1) {
+  assert(s0 <= s1 && "subpath: s0 <= s1");
   rs::Path out;
   out.radius = path.radius;
   double start = 0.0;

@@ -20,6 +20,15 @@ namespace hrs::planning {
 
 namespace {
 
+//! How far from an RRT node a collision query can look: a query piece
+//! starts at a node and is at most step_length long; the chair (and the
+//! C-space's swept slice shape) stays within its half diagonal of its
+//! centre; 5 cm on top for the conservative rounding.
+double query_reach(const geometry::Scene& scene, const TourOptions& tour) {
+  return tour.planner.step_length +
+         0.5 * std::hypot(scene.wheelchair.length, scene.wheelchair.width) + 0.05;
+}
+
 void add_stats(LegStats& into, const LegStats& more) {
   into.iterations += more.iterations;
   into.collision_checks += more.collision_checks;
@@ -28,26 +37,6 @@ void add_stats(LegStats& into, const LegStats& more) {
 }
 
 }  // namespace
-
-ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
-  legs_database += o.legs_database;
-  legs_repaired += o.legs_repaired;
-  legs_planned += o.legs_planned;
-  legs_failed += o.legs_failed;
-  legs_rejected += o.legs_rejected;
-  checks_skipped += o.checks_skipped;
-  trees_reused += o.trees_reused;
-  failures_reused += o.failures_reused;
-  legs_proven += o.legs_proven;
-  leg_requests += o.leg_requests;
-  for (const auto& [k, v] : o.rrt_iterations) rrt_iterations[k] += v;
-  database_ms += o.database_ms;
-  repaired_ms += o.repaired_ms;
-  planned_ms += o.planned_ms;
-  failed_ms += o.failed_ms;
-  proof_ms += o.proof_ms;
-  return *this;
-}
 
 //! The shared outcome of one key in one iteration.
 struct ReusePlanner::Slot {
@@ -82,12 +71,9 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       options_(options),
       radius_(scene.wheelchair.turning_radius),
       trees_(cspace, scene.wheelchair.turning_radius, options),
-      scene_(scene) {
-  // A query piece starts at a node and is at most step_length long; the
-  // chair (and the C-space's swept slice shape) stays within its half
-  // diagonal of its centre. 5 cm on top for the conservative rounding.
-  reach_ = tour.planner.step_length +
-           0.5 * std::hypot(scene.wheelchair.length, scene.wheelchair.width) + 0.05;
+      scene_(scene),
+      failures_(scene_, query_reach(scene, tour)),
+      proofs_(scene_, cspace, options.proof_grid, options.proof_cells) {
   if (options_.samples || options_.steering) {
     const geometry::Box b = geometry::bounding_box(scene.room.polygon);
     rs::DecompositionOptions d;
@@ -102,7 +88,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
   }
   if (options_.metrics) measures_ = std::make_unique<LegMeasures>(cspace, radius_);
-  // still_free(): a point of a stored path lies within half a trace step of
+  // PathDatabase::still_free(): a point of a stored path lies within half a trace step of
   // the trace; straight motions are tested as the segment itself and each
   // arc, cut at slice borders, as triangles within one slice's arc length
   // (radius · 2π/K) of a point on the arc (cspace.h); an object's C-obstacle
@@ -126,38 +112,10 @@ TourHooks ReusePlanner::hooks() {
 
 void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
   iteration_seed_ = iteration_seed;
-  {
-    std::lock_guard lock(proof_mutex_);
-    grid_current_ = false;
-  }
+  proofs_.invalidate();
   slots_.clear();
   leg_requests_ = 0;
   unshared_ = {};
-}
-
-bool ReusePlanner::still_free(const PathDatabase::Entry& e) const {
-  if (e.checked.size() != static_cast<std::size_t>(cspace_->object_count())) return false;
-  const double m = still_free_margin_;
-  geometry::Polygon fp;
-  for (int i = 0; i < cspace_->object_count(); ++i) {
-    const Pose2& now = cspace_->object_pose(i);
-    if (now == e.checked[i]) continue;
-    // The footprint where the object stands now, and its box grown by m.
-    fp.clear();
-    double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-    for (const geometry::Vec2& v : scene_.objects[i].footprint) {
-      fp.push_back(geometry::to_world(now, v));
-      xmin = std::min(xmin, fp.back().x), ymin = std::min(ymin, fp.back().y);
-      xmax = std::max(xmax, fp.back().x), ymax = std::max(ymax, fp.back().y);
-    }
-    for (const geometry::Vec2& p : e.trace) {
-      if (p.x < xmin - m || p.x > xmax + m || p.y < ymin - m || p.y > ymax + m) continue;
-      if (geometry::point_in_polygon(p, fp)) return false;
-      for (std::size_t k = 0, j = fp.size() - 1; k < fp.size(); j = k++)
-        if (geometry::point_segment_distance(p, fp[j], fp[k]) <= m) return false;
-    }
-  }
-  return true;
 }
 
 LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from, const Pose2& to,
@@ -173,7 +131,8 @@ LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from, con
   const auto t0 = std::chrono::steady_clock::now();
   MotionValidator validator(*cspace_, radius_);
   // Driven from the same start, the path is the same motion as when checked.
-  skipped = options_.skip_far_checks && e->from == from && still_free(*e);
+  skipped = options_.skip_far_checks && e->from == from &&
+            PathDatabase::still_free(*e, *cspace_, scene_, still_free_margin_);
   const bool valid = std::abs(path->radius - radius_) <= 1e-12 &&
                      pose_gap(final_pose(from, *path), to) <= tour_.planner.goal_tolerance &&
                      (skipped || validator.path_free(from, *path));
@@ -249,36 +208,12 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   return out;
 }
 
-bool ReusePlanner::failure_repeats(const LegKey& key, const Pose2& from, const Pose2& to) const {
-  const auto it = failures_.find(key);
-  if (it == failures_.end()) return false;
-  const Failure& f = it->second;
-  if (!(f.from == from) || !(f.to == to)) return false;
-  for (int i = 0; i < cspace_->object_count(); ++i) {
-    const Pose2& now = cspace_->object_pose(i);
-    if (now == f.layout[i]) continue;
-    for (const Pose2& pose : {f.layout[i], now}) {
-      geometry::Object o = scene_.objects[i];
-      o.pose = pose;
-      double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-      for (const geometry::Vec2& v : geometry::world_footprint(o)) {
-        xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
-        xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
-      }
-      xmin -= reach_, ymin -= reach_, xmax += reach_, ymax += reach_;
-      for (const geometry::Vec2& p : f.points)
-        if (p.x >= xmin && p.x <= xmax && p.y >= ymin && p.y <= ymax) return false;
-    }
-  }
-  return true;
-}
-
 LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Pose2& to,
                                   std::uint64_t seed, LegPlanner& planner, Slot& slot) const {
   LegOutcome out;
   out.planned = true;
   out.source = LegSource::kPlanned;
-  if (options_.failures && failure_repeats(key, from, to)) {
+  if (options_.failures && failures_.repeats(key, from, to, *cspace_)) {
     slot.failure_reused = true;
     return out;  // the recorded RRT run would repeat query for query
   }
@@ -304,9 +239,8 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   const int cap = planner.options().max_iterations;
   int budget = options_.budget ? std::min(options_.budget_iterations, cap) : cap;
   if (options_.backoff) {
-    const auto it = failed_in_a_row_.find(key);
-    if (it != failed_in_a_row_.end()) {
-      const int halvings = std::min(it->second, 30);
+    if (const int failed = failures_.failed_in_a_row(key); failed > 0) {
+      const int halvings = std::min(failed, 30);
       budget = std::max(std::min(options_.backoff_floor, budget), budget >> halvings);
     }
   }
@@ -316,7 +250,7 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   slot.fresh_iterations = r.stats.iterations;
   if (!r.found && staged) {
     const auto t0 = std::chrono::steady_clock::now();
-    slot.proven = proven_impossible(from, to);
+    slot.proven = proofs_.disconnected(from, to);
     slot.proof_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     out.stats.time_ms += slot.proof_ms;
@@ -328,7 +262,7 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     }
   }
   // A proven failure is not recorded for `failures`: the proof looked at the
-  // whole layout, not only near the RRT's nodes, so failure_repeats() could
+  // whole layout, not only near the RRT's nodes, so FailureMemory::repeats() could
   // not vouch for it after a move.
   if (!r.found && options_.failures && !slot.proven) {
     slot.failed_points.reserve(tree.nodes.size() + 1);
@@ -400,38 +334,6 @@ bool ReusePlanner::speculate_one(std::span<const LegRequest> next, LegPlanner& p
 
 ReusePlanner::Speculation ReusePlanner::speculation() const {
   return {speculated_.load(), speculated_used_.load()};
-}
-
-bool ReusePlanner::proven_impossible(const Pose2& from, const Pose2& to) const {
-  std::unique_ptr<geometry::ReachabilityQuery> query;
-  {
-    std::lock_guard lock(proof_mutex_);
-    if (!grid_ && !grid_unavailable_) {
-      try {
-        grid_ = std::make_unique<geometry::FreeGrid>(scene_, options_.proof_grid);
-      } catch (const std::invalid_argument&) {
-        grid_unavailable_ = true;  // cells too coarse for this chair: no proofs
-      }
-    }
-    if (!grid_) return false;
-    if (!grid_current_) {
-      for (int i = 0; i < cspace_->object_count(); ++i)
-        grid_->move_object(i, cspace_->object_pose(i));
-      grid_current_ = true;
-    }
-    if (idle_queries_.empty()) {
-      query = std::make_unique<geometry::ReachabilityQuery>();
-    } else {
-      query = std::move(idle_queries_.back());
-      idle_queries_.pop_back();
-    }
-  }
-  // The grid is not written again before the next iteration: reads are safe.
-  const bool proven = query->query(*grid_, from, to, options_.proof_cells) ==
-                      geometry::ReachabilityQuery::Answer::kDisconnected;
-  std::lock_guard lock(proof_mutex_);
-  idle_queries_.push_back(std::move(query));
-  return proven;
 }
 
 rs::Path ReusePlanner::shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const {
@@ -546,20 +448,16 @@ ReuseCounters ReusePlanner::end_iteration() {
     }
     if (options_.failures && planned) {
       if (!slot->failed_points.empty()) {
-        failures_[key] = Failure{slot->from, slot->to, layout, std::move(slot->failed_points)};
+        failures_.record(key, slot->from, slot->to, layout, std::move(slot->failed_points));
       } else if (slot->planned.found) {
-        failures_.erase(key);
+        failures_.forget(key);
       }
     }
-    if (options_.backoff && outcome == &slot->planned) {
-      if (outcome->found)
-        failed_in_a_row_.erase(key);
-      else
-        ++failed_in_a_row_[key];
-    }
+    if (options_.backoff && outcome == &slot->planned)
+      failures_.count_fresh_plan(key, outcome->found);
     if (options_.paths && outcome) {
       if (outcome == &slot->database) {
-        // path_free() held now (checked, or implied by still_free()).
+        // path_free() held now (checked, or implied by PathDatabase::still_free()).
         database_.put(key, slot->from, slot->to, outcome->path, layout);
       } else if (outcome->found) {
         database_.put(key, slot->from, slot->to, outcome->path);

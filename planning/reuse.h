@@ -36,10 +36,13 @@
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 #include "planning/decomposition_hooks.h"
+#include "planning/failure_memory.h"
 #include "planning/leg_measures.h"
 #include "planning/motion_validator.h"
 #include "planning/path_database.h"
 #include "planning/path_shortening.h"
+#include "planning/proof_oracle.h"
+#include "planning/reuse_counters.h"
 #include "planning/reuse_options.h"
 #include "planning/rrt.h"
 #include "planning/tour.h"
@@ -47,30 +50,6 @@
 #include "rs/decomposition.h"
 
 namespace hrs::planning {
-
-//! Counts over a design run (or one iteration). Deterministic: legs are
-//! counted once per key and iteration, from the pure outcomes.
-struct ReuseCounters {
-  std::uint64_t legs_database = 0;  //!< served from the database, transformed and validated
-  std::uint64_t legs_repaired = 0;  //!< stored path repaired (valid part kept, gap planned)
-  std::uint64_t legs_planned = 0;   //!< planned fresh and found
-  std::uint64_t legs_failed = 0;    //!< planned fresh, nothing found
-  std::uint64_t legs_rejected = 0;  //!< stored paths not valid as they were
-  //! Of legs_database: no check run, every object moved since the last
-  //! check stood out of reach (ReuseOptions::skip_far_checks).
-  std::uint64_t checks_skipped = 0;
-  std::uint64_t trees_reused = 0;     //!< fresh plans that grew a kept tree
-  std::uint64_t failures_reused = 0;  //!< failed legs known to fail again (in legs_failed)
-  std::uint64_t legs_proven = 0;      //!< failed legs proven impossible (in legs_failed)
-  std::uint64_t leg_requests = 0;     //!< leg look-ups by tours (shared legs counted per tour)
-  //! RRT iterations of the successful fresh plans: iterations → count (Fig. "rrt-it").
-  std::map<int, std::uint64_t> rrt_iterations;
-  //! Work behind the outcomes (wall time, not reproducible): database
-  //! validations, repairs, fresh plans found, fresh plans failed.
-  double database_ms = 0.0, repaired_ms = 0.0, planned_ms = 0.0, failed_ms = 0.0;
-  double proof_ms = 0.0;  //!< of which proofs (grid updates and searches)
-  ReuseCounters& operator+=(const ReuseCounters& other);
-};
 
 //! The proposed planner's leg service (a LegProvider) for one scene.
 class ReusePlanner final : public LegProvider {
@@ -113,24 +92,8 @@ class ReusePlanner final : public LegProvider {
 
  private:
   struct Slot;
-  //! A failed RRT run: its ends, the layout it ran in, and every position
-  //! its collision queries were centred near (nodes and the goal).
-  struct Failure {
-    Pose2 from, to;
-    std::vector<Pose2> layout;
-    std::vector<geometry::Vec2> points;
-  };
-  //! True when the recorded failure of `key` provably repeats now.
-  bool failure_repeats(const LegKey& key, const Pose2& from, const Pose2& to) const;
-  //! True when path_free(e.from, e.path), which held in the layout
-  //! e.checked, provably holds now: the walls never move and the footprint
-  //! of every object that moved since lies (now) farther than
-  //! still_free_margin_ from each point of e.trace. Its old pose blocked
-  //! nothing then and is gone, so no query of the check can change to
-  //! "blocked" (cspace.h; the margin's terms are in the constructor).
-  bool still_free(const PathDatabase::Entry& e) const;
   //! Stage A: the stored path, transformed and validated (no RRT);
-  //! `skipped`: served without a check, by still_free().
+  //! `skipped`: served without a check, by PathDatabase::still_free().
   LegOutcome from_database(const LegKey& key, const Pose2& from, const Pose2& to,
                            bool& skipped) const;
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
@@ -148,9 +111,6 @@ class ReusePlanner final : public LegProvider {
   bool speculate_one(std::span<const LegRequest> next, LegPlanner& planner);
   //! shorten_path() of a found path, its checks counted into `stats`.
   rs::Path shortened(const Pose2& from, const rs::Path& path, LegStats& stats) const;
-  //! True when FreeGrid proves that no motion joins `from` and `to` in the
-  //! current layout (the grid is brought up to date once per iteration).
-  bool proven_impossible(const Pose2& from, const Pose2& to) const;
   std::optional<LegOutcome> repair(const LegKey& key, const Pose2& from, const Pose2& to,
                                    std::uint64_t seed, LegPlanner& planner) const;
 
@@ -164,18 +124,9 @@ class ReusePlanner final : public LegProvider {
   std::unique_ptr<LegMeasures> measures_;
   PathDatabase database_;
   TreeStore trees_;
-  std::map<LegKey, Failure> failures_;
-  //! `backoff`: fresh plans of the key that failed in a row since last found.
-  std::map<LegKey, int> failed_in_a_row_;
-  geometry::Scene scene_;  //!< footprints for failure_repeats(), the proof grid
-  //! The proof grid and its per-thread searches; built on the first proof,
-  //! moved to the current layout at the first proof of each iteration.
-  mutable std::mutex proof_mutex_;
-  mutable std::unique_ptr<geometry::FreeGrid> grid_;
-  mutable bool grid_current_ = false;
-  mutable bool grid_unavailable_ = false;
-  mutable std::vector<std::unique_ptr<geometry::ReachabilityQuery>> idle_queries_;
-  double reach_ = 0.0;              //!< how far from a node a collision query can look
+  geometry::Scene scene_;           //!< footprints for still_free(), the failures, the proofs
+  FailureMemory failures_;          //!< `failures` and `backoff`
+  ProofOracle proofs_;              //!< `proofs`
   double still_free_margin_ = 0.0;  //!< see still_free()
   std::uint64_t iteration_seed_ = 0;
   std::mutex mutex_;  //!< guards slots_, leg_requests_ and the slots' `requested`

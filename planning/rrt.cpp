@@ -1,6 +1,7 @@
 #include "planning/rrt.h"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -96,8 +97,71 @@ std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pos
   return last;
 }
 
+void LegPlanner::index_tree(const RrtTree& tree) {
+  nearest_.clear();
+  untried_.clear();
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+    nearest_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
+    untried_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
+  }
+}
+
+std::int32_t LegPlanner::closest_by_steering(const RrtTree& tree, const Pose2& target,
+                                             Steering& steering) const {
+  std::int32_t best = -1;
+  double best_length = std::numeric_limits<double>::infinity();
+  for (std::int32_t id : knn_) {
+    const double d = steering.distance(tree.nodes[id].pose, target, radius_);
+    if (d < best_length) {
+      best_length = d;
+      best = id;
+    }
+  }
+  return best;
+}
+
+std::int32_t LegPlanner::try_goal(RrtTree& tree, const Pose2& to, Steering& steering,
+                                  std::size_t& tree_size_at_goal_attempt) {
+  const std::size_t k = static_cast<std::size_t>(std::max(1, options_.k_nearest));
+  if (options_.skip_tried_goal_nodes) {
+    untried_.nearest(to, k, knn_);  // the k nearest nodes not yet tried
+    if (knn_.empty()) return -1;
+  } else {
+    // A goal attempt from an unchanged tree repeats the previous one exactly
+    // (same nearest node, same curve, same collision), so it is skipped;
+    // this changes the work, never the outcome.
+    if (tree.nodes.size() == tree_size_at_goal_attempt) return -1;
+    nearest_.nearest(to, k, knn_);
+  }
+  const std::int32_t best = closest_by_steering(tree, to, steering);
+  if (best < 0) return -1;
+  bool reached = false;
+  const std::size_t before = tree.nodes.size();
+  const std::int32_t last =
+      extend(tree, best, to, std::numeric_limits<double>::infinity(), reached);
+  tree_size_at_goal_attempt = tree.nodes.size();
+  // The chosen node and the nodes along its curve lead to the goal along the
+  // same (blocked) curve: a shortest path's suffix is a shortest path.
+  untried_.remove(best);
+  for (std::size_t i = before; i < tree.nodes.size(); ++i)
+    untried_.remove(static_cast<std::int32_t>(i));
+  if (reached && pose_gap(tree.nodes[last].pose, to) <= options_.goal_tolerance) return last;
+  return -1;
+}
+
+void LegPlanner::try_sample(RrtTree& tree, const Pose2& target, Steering& steering) {
+  const std::size_t k = static_cast<std::size_t>(std::max(1, options_.k_nearest));
+  nearest_.nearest(target, k, knn_);
+  const std::int32_t best = closest_by_steering(tree, target, steering);
+  if (best < 0) return;
+  bool reached = false;
+  extend(tree, best, target, options_.max_steps * options_.step_length, reached);
+}
+
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
                            int max_iterations) {
+  // Documented preconditions (rrt.h): a tree to grow is rooted at `from`.
+  assert(tree.nodes.empty() || geometry::pose_gap(tree.nodes.front().pose, from) <= 1e-9);
   const auto t0 = std::chrono::steady_clock::now();
   LegResult result;
   result.path.radius = radius_;
@@ -105,22 +169,11 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   std::mt19937_64 rng(seed);
   SampleSource& sampler = hooks_.sampler ? *hooks_.sampler : uniform_;
   Steering& steering = hooks_.steering ? *hooks_.steering : exact_;
-
   if (tree.nodes.empty()) tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  nearest_.clear();
-  untried_.clear();
-  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
-    nearest_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
-    untried_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
-  }
+  index_tree(tree);
 
   const bool ends_free = validator_.pose_free(from) && validator_.pose_free(to);
-  const double max_sample_length = options_.max_steps * options_.step_length;
-  // A goal attempt from an unchanged tree repeats the previous one exactly
-  // (same nearest node, same curve, same collision), so it is skipped; this
-  // changes the work, never the outcome.
   std::size_t tree_size_at_goal_attempt = 0;
-  const std::size_t k = static_cast<std::size_t>(std::max(1, options_.k_nearest));
   std::int32_t goal_node = -1;
   if (ends_free && pose_gap(from, to) <= options_.goal_tolerance) goal_node = 0;
   const int iteration_cap = max_iterations >= 0 ? max_iterations : options_.max_iterations;
@@ -128,42 +181,11 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   while (ends_free && goal_node < 0 && it < iteration_cap &&
          static_cast<int>(tree.nodes.size()) < options_.max_nodes) {
     ++it;
-    const bool to_goal = unit(rng) < options_.goal_bias;
-    const Pose2 target = to_goal ? to : sampler.sample(rng);
-    if (to_goal && options_.skip_tried_goal_nodes) {
-      untried_.nearest(target, k, knn_);  // the k nearest nodes not yet tried
-      if (knn_.empty()) continue;
+    // Goal bias (§III-B): the goal itself, else a sample (one draw each).
+    if (unit(rng) < options_.goal_bias) {
+      goal_node = try_goal(tree, to, steering, tree_size_at_goal_attempt);
     } else {
-      if (to_goal && tree.nodes.size() == tree_size_at_goal_attempt) continue;
-      nearest_.nearest(target, k, knn_);
-    }
-    std::int32_t best = -1;
-    double best_length = std::numeric_limits<double>::infinity();
-    for (std::int32_t id : knn_) {
-      const double d = steering.distance(tree.nodes[id].pose, target, radius_);
-      if (d < best_length) {
-        best_length = d;
-        best = id;
-      }
-    }
-    if (best < 0) continue;
-    bool reached = false;
-    if (to_goal) {
-      const std::size_t before = tree.nodes.size();
-      const std::int32_t last =
-          extend(tree, best, to, std::numeric_limits<double>::infinity(), reached);
-      tree_size_at_goal_attempt = tree.nodes.size();
-      // The chosen node and the nodes along its curve lead to the goal along
-      // the same (blocked) curve: a shortest path's suffix is a shortest path.
-      untried_.remove(best);
-      for (std::size_t i = before; i < tree.nodes.size(); ++i)
-        untried_.remove(static_cast<std::int32_t>(i));
-      if (reached && pose_gap(tree.nodes[last].pose, to) <= options_.goal_tolerance) {
-        goal_node = last;
-        break;
-      }
-    } else {
-      extend(tree, best, target, max_sample_length, reached);
+      try_sample(tree, sampler.sample(rng), steering);
     }
   }
 

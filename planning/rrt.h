@@ -31,6 +31,7 @@
 #include "geometry/scene.h"
 #include "planning/motion_validator.h"
 #include "planning/nearest.h"
+#include "planning/rrt_hooks.h"
 #include "rs/reeds_shepp.h"
 
 namespace hrs::planning {
@@ -87,50 +88,6 @@ struct RrtTree {
   rs::Path path_to(std::int32_t index, double radius) const;
 };
 
-//! Where non-goal targets come from. Baseline: uniform in a box.
-class SampleSource {
- public:
-  virtual ~SampleSource() = default;
-  //! A target pose; must draw randomness only from `rng`.
-  virtual Pose2 sample(std::mt19937_64& rng) = 0;
-};
-
-//! Uniform poses in an axis-aligned box times the heading circle (baseline).
-class UniformSampler final : public SampleSource {
- public:
-  UniformSampler(double xmin, double ymin, double xmax, double ymax)
-      : xmin_(xmin), ymin_(ymin), xmax_(xmax), ymax_(ymax) {}
-  //! The bounding box of the scene's room.
-  static UniformSampler for_room(const geometry::Scene& scene);
-  Pose2 sample(std::mt19937_64& rng) override;
-
- private:
-  double xmin_, ymin_, xmax_, ymax_;
-};
-
-//! The RS steering function. Baseline: the exact shortest path (rs/).
-class Steering {
- public:
-  virtual ~Steering() = default;
-  //! RS length used to rank the k nearest nodes.
-  virtual double distance(const Pose2& from, const Pose2& to, double radius) = 0;
-  //! The RS path actually driven.
-  virtual rs::Path path(const Pose2& from, const Pose2& to, double radius) = 0;
-};
-
-//! Exact shortest RS paths (all 48 words).
-class ExactSteering final : public Steering {
- public:
-  double distance(const Pose2& from, const Pose2& to, double radius) override;
-  rs::Path path(const Pose2& from, const Pose2& to, double radius) override;
-};
-
-//! Optional reuse hooks; null pointers mean the baseline behaviour.
-struct PlannerHooks {
-  SampleSource* sampler = nullptr;  //!< null: uniform in the room's box
-  Steering* steering = nullptr;     //!< null: exact RS
-};
-
 class LegPlanner {
  public:
   //! Plans in `cspace` (shared, read-only) for the scene's chair and room.
@@ -156,6 +113,20 @@ class LegPlanner {
   //! `reached` when the whole path to `target` was added.
   std::int32_t extend(RrtTree& tree, std::int32_t from_node, const Pose2& target, double max_length,
                       bool& reached);
+  //! Indexes the tree's nodes for nearest-node queries (all nodes untried).
+  void index_tree(const RrtTree& tree);
+  //! Of the nodes in knn_, the one with the shortest steering distance to
+  //! `target` (−1 when knn_ is empty).
+  std::int32_t closest_by_steering(const RrtTree& tree, const Pose2& target,
+                                   Steering& steering) const;
+  //! A goal-biased iteration: extend the best of the k nearest (untried)
+  //! nodes along the whole curve to `to`; the goal node when it is reached,
+  //! else −1. `tree_size_at_goal_attempt` skips repeats (literal baseline).
+  std::int32_t try_goal(RrtTree& tree, const Pose2& to, Steering& steering,
+                        std::size_t& tree_size_at_goal_attempt);
+  //! A sample iteration: extend the best of the k nearest nodes at most
+  //! max_steps steps towards `target`.
+  void try_sample(RrtTree& tree, const Pose2& target, Steering& steering);
 
   const CSpace* cspace_;
   PlannerOptions options_;

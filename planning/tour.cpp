@@ -7,17 +7,13 @@
 #include <utility>
 
 #include "geometry/error.h"
-#include "planning/leg_measures.h"
 #include "geometry/random.h"
+#include "planning/leg_measures.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
 
-namespace {
-
-
-
-}  // namespace
+namespace {}  // namespace
 
 std::uint64_t leg_seed(std::uint64_t tour_seed, const LegKey& key) {
   std::uint64_t h = splitmix64(tour_seed);
@@ -105,16 +101,10 @@ Tour TourPlanner::plan(const std::vector<std::string>& sequence) {
   return tour;
 }
 
-bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
-                         std::vector<Leg>& legs, Tour& tour) {
-  if (level + 1 == stops.size()) return true;
-  Stop& here = stops[level];
-  Stop& next = stops[level + 1];
-  if (here.dead[pose]) return false;
+TourPlanner::Candidates TourPlanner::candidates(const Stop& here, int pose,
+                                                const Stop& next) const {
   const Pose2 from = here.goals[pose].pose;
   const double radius = planner_.radius();
-
-  // Candidate goal poses of the next stop, shortest RS length first.
   std::vector<std::pair<double, int>> order;
   order.reserve(next.goals.size());
   for (std::size_t j = 0; j < next.goals.size(); ++j) {
@@ -124,76 +114,80 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
   if (static_cast<int>(order.size()) > options_.max_candidates) {
     order.resize(static_cast<std::size_t>(std::max(0, options_.max_candidates)));
   }
+  // As leg requests: a provider may start on the later ones while it waits
+  // for an earlier one (LegProvider::resolve).
+  Candidates out;
+  out.goal.reserve(order.size());
+  out.requests.reserve(order.size());
+  for (const auto& [rs_length, j] : order) {
+    out.goal.push_back(j);
+    out.requests.push_back({{here.object, next.object, here.goals[pose].slot, next.goals[j].slot},
+                            from,
+                            next.goals[j].pose});
+  }
+  return out;
+}
 
-  // The candidates as leg requests: a provider may start on the later ones
-  // while it waits for an earlier one (LegProvider::resolve).
-  std::vector<LegRequest> requests;
-  requests.reserve(order.size());
-  for (const auto& [rs_length, j] : order)
-    requests.push_back({{here.object, next.object, here.goals[pose].slot, next.goals[j].slot},
-                        from,
-                        next.goals[j].pose});
+TourPlanner::Fetch TourPlanner::fetch_leg(std::span<const LegRequest> requests, std::size_t c,
+                                          Tour& tour, Leg& leg) {
+  const LegRequest& r = requests[c];
+  leg.key = r.key;
+  leg.from = r.from;
+  leg.to = r.to;
+  // The outcome from the provider (proposed) or from this tour's own RRT
+  // query (baseline); a query past max_leg_plans is not run (capped below).
+  const bool may_plan = tour.stats.legs_planned < options_.max_leg_plans;
+  LegOutcome outcome;
+  if (hooks_.provider) {
+    outcome = hooks_.provider->resolve(r.key, r.from, r.to, seed_, may_plan, planner_,
+                                       requests.subspan(c + 1));
+  } else {
+    outcome.planned = true;
+    if (may_plan) {
+      LegResult result = planner_.plan(r.from, r.to, leg_seed(seed_, r.key));
+      outcome.found = result.found;
+      outcome.path = std::move(result.path);
+      outcome.stats = result.stats;
+    }
+  }
+  if (outcome.rejected) ++tour.stats.legs_rejected;
+  if (outcome.planned) {
+    if (!may_plan) {
+      tour.stats.capped = true;
+      return Fetch::kCapped;
+    }
+    ++tour.stats.legs_planned;
+    leg.stats = outcome.stats;
+  }
+  tour.stats.rrt_iterations += static_cast<std::uint64_t>(outcome.stats.iterations);
+  tour.stats.collision_checks += outcome.stats.collision_checks;
+  if (!outcome.found) {
+    ++tour.stats.legs_failed;
+    return Fetch::kFailed;
+  }
+  leg.source = outcome.source;
+  if (leg.source == LegSource::kReused) ++tour.stats.legs_reused;
+  if (leg.source == LegSource::kRepaired) ++tour.stats.legs_repaired;
+  leg.path = std::move(outcome.path);
+  return Fetch::kFound;
+}
 
-  for (std::size_t c = 0; c < order.size(); ++c) {
-    const int j = order[c].second;
+bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
+                         std::vector<Leg>& legs, Tour& tour) {
+  if (level + 1 == stops.size()) return true;
+  Stop& here = stops[level];
+  Stop& next = stops[level + 1];
+  if (here.dead[pose]) return false;
+  const Candidates cand = candidates(here, pose, next);
+  for (std::size_t c = 0; c < cand.goal.size(); ++c) {
+    const int j = cand.goal[c];
     if (next.dead[j]) continue;  // reached before: its continuation failed
-    const Pose2 to = requests[c].to;
-    const LegKey key = requests[c].key;
-    std::optional<rs::Path> path;
-    LegSource source = LegSource::kPlanned;
-    LegStats stats;
-
-    if (hooks_.provider) {
-      const bool may_plan = tour.stats.legs_planned < options_.max_leg_plans;
-      LegOutcome outcome = hooks_.provider->resolve(key, from, to, seed_, may_plan, planner_,
-                                                    std::span(requests).subspan(c + 1));
-      if (outcome.rejected) ++tour.stats.legs_rejected;
-      if (outcome.planned) {
-        if (!may_plan) {
-          tour.stats.capped = true;
-          return false;
-        }
-        ++tour.stats.legs_planned;
-        stats = outcome.stats;
-      }
-      tour.stats.rrt_iterations += static_cast<std::uint64_t>(outcome.stats.iterations);
-      tour.stats.collision_checks += outcome.stats.collision_checks;
-      if (!outcome.found) {
-        ++tour.stats.legs_failed;
-        continue;
-      }
-      source = outcome.source;
-      if (source == LegSource::kReused) ++tour.stats.legs_reused;
-      if (source == LegSource::kRepaired) ++tour.stats.legs_repaired;
-      path = std::move(outcome.path);
-    }
-    if (!path) {
-      if (tour.stats.legs_planned >= options_.max_leg_plans) {
-        tour.stats.capped = true;
-        return false;
-      }
-      ++tour.stats.legs_planned;
-      const std::uint64_t seed = leg_seed(seed_, key);
-      LegResult result = planner_.plan(from, to, seed);
-      stats = result.stats;
-      tour.stats.rrt_iterations += static_cast<std::uint64_t>(result.stats.iterations);
-      tour.stats.collision_checks += result.stats.collision_checks;
-      if (!result.found) {
-        ++tour.stats.legs_failed;
-        continue;
-      }
-      path = std::move(result.path);
-    }
-
     Leg leg;
     leg.from_id = here.id;
     leg.to_id = next.id;
-    leg.key = key;
-    leg.from = from;
-    leg.to = to;
-    leg.path = std::move(*path);
-    leg.source = source;
-    leg.stats = stats;
+    const Fetch fetched = fetch_leg(cand.requests, c, tour, leg);
+    if (fetched == Fetch::kCapped) return false;
+    if (fetched == Fetch::kFailed) continue;
     legs.push_back(std::move(leg));
     tour.stats.depth = std::max(tour.stats.depth, static_cast<int>(legs.size()));
     if (search(stops, level + 1, j, legs, tour)) return true;

@@ -33,6 +33,7 @@
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 #include "planning/goals.h"
+#include "planning/leg_provider.h"
 #include "planning/metrics.h"
 #include "planning/rrt.h"
 #include "rs/reeds_shepp.h"
@@ -40,7 +41,7 @@
 namespace hrs::planning {
 
 //! Id of the start node in sequences (the door).
-inline constexpr std::string_view kDoorId = "door";
+inline constexpr std::string_view kDoorId = geometry::kStartNodeId;
 
 struct TourOptions {
   PlannerOptions planner;  //!< the leg planner (baseline RRT, §III-B)
@@ -52,62 +53,6 @@ struct TourOptions {
   int max_leg_plans = 40;
   //! Waypoint spacing of the returned legs (metres).
   double waypoint_step = kWaypointStep;
-};
-
-//! Identifies a leg for the path database: object indices (−1: the door) and
-//! goal-pose slots (GoalPose::slot; 0 for the door).
-struct LegKey {
-  int from_object = -1;
-  int to_object = -1;
-  int from_slot = 0;
-  int to_slot = 0;
-  friend bool operator==(const LegKey&, const LegKey&) = default;
-  friend auto operator<=>(const LegKey&, const LegKey&) = default;
-};
-
-//! How a leg's path was obtained.
-enum class LegSource {
-  kPlanned,   //!< an RRT query from scratch (or from a reused tree)
-  kReused,    //!< a stored path, transformed and validated (§V-B)
-  kRepaired,  //!< a stored path's valid part kept, the gap re-planned (§V-B)
-};
-
-//! What a LegProvider answers for one leg.
-struct LegOutcome {
-  bool found = false;
-  rs::Path path;  //!< driven from the leg's `from`; free in the current layout
-  LegSource source = LegSource::kPlanned;
-  //! An RRT query was run (or would be: see LegProvider::resolve); it counts
-  //! against TourOptions::max_leg_plans.
-  bool planned = false;
-  bool rejected = false;  //!< a stored path existed but was not valid as it is
-  LegStats stats;         //!< work behind the outcome (RRT and validation)
-};
-
-//! Resolves whole legs for the proposed planner (§V; planning/reuse.h): path
-//! database, tree reuse and within-iteration sharing behind one call. Called
-//! from parallel tours, so it must be thread-safe, and each outcome must be a
-//! pure function of the key, the poses, the current layout and the
-//! provider's state: then tours agree whatever thread computed a leg first.
-//! A leg a tour may ask for: its key and its ends in the current layout.
-struct LegRequest {
-  LegKey key;
-  Pose2 from, to;
-};
-
-class LegProvider {
- public:
-  virtual ~LegProvider() = default;
-  //! The outcome of leg `key` from `from` to `to`. `tour_seed` is the calling
-  //! tour's seed; `planner` is the calling tour's (per-thread) leg planner.
-  //! With `may_plan` false no RRT query is run: an outcome that needs one
-  //! comes back with planned = true and found = false. `next`: the legs the
-  //! tour asks for next, in order, should this one fail (the remaining
-  //! candidates of its search level); a provider may work on them while it
-  //! waits, never changing any outcome.
-  virtual LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to,
-                             std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
-                             std::span<const LegRequest> next = {}) = 0;
 };
 
 class LegMeasures;
@@ -173,6 +118,20 @@ class TourPlanner {
 
  private:
   struct Stop;
+  //! The next stop's goal poses as leg requests from goal `pose` of `here`,
+  //! shortest RS length first, at most max_candidates; `goal[c]` is the
+  //! index in next.goals of request c.
+  struct Candidates {
+    std::vector<int> goal;
+    std::vector<LegRequest> requests;
+  };
+  Candidates candidates(const Stop& here, int pose, const Stop& next) const;
+  //! A leg's path, from the provider or a fresh RRT query, counted into
+  //! `tour`'s stats. kCapped: the tour hit max_leg_plans (stats.capped set).
+  enum class Fetch { kFound, kFailed, kCapped };
+  Fetch fetch_leg(std::span<const LegRequest> requests, std::size_t c, Tour& tour, Leg& leg);
+  //! Depth-first branch and bound from goal `pose` of stop `level`: true
+  //! when the rest of the tour was found (its legs appended to `legs`).
   bool search(std::vector<Stop>& stops, std::size_t level, int pose, std::vector<Leg>& legs,
               Tour& tour);
 

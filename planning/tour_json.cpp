@@ -93,13 +93,16 @@ std::string tour_json(const Tour& tour, std::optional<double> likelihood) {
   return tour_object(tour, likelihood).dump();
 }
 
-std::string tours_json(const std::vector<Tour>& tours, const std::vector<double>& likelihoods) {
+std::string tours_json(const std::vector<Tour>& tours, const std::vector<double>& likelihoods,
+                       bool timings, int indent) {
   json all = json::array();
   for (std::size_t i = 0; i < tours.size(); ++i) {
-    all.push_back(tour_object(
-        tours[i], i < likelihoods.size() ? std::optional<double>(likelihoods[i]) : std::nullopt));
+    json t = tour_object(
+        tours[i], i < likelihoods.size() ? std::optional<double>(likelihoods[i]) : std::nullopt);
+    if (!timings) t["stats"].erase("time_ms");
+    all.push_back(std::move(t));
   }
-  return json{{"tours", std::move(all)}}.dump();
+  return json{{"tours", std::move(all)}}.dump(indent);
 }
 
 }  // namespace hrs::planning

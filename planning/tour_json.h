@@ -26,7 +26,9 @@ std::string plan_json(const Pose2& from, const Pose2& to, const LegResult& resul
 std::string tour_json(const Tour& tour, std::optional<double> likelihood = std::nullopt);
 
 //! The whole tours.json document: {"tours": [...]}; likelihoods may be
-//! empty or one per tour.
-std::string tours_json(const std::vector<Tour>& tours, const std::vector<double>& likelihoods = {});
+//! empty or one per tour. Without `timings` the stats carry no time_ms (so
+//! the same seed gives the same bytes); `indent` >= 0 pretty-prints.
+std::string tours_json(const std::vector<Tour>& tours, const std::vector<double>& likelihoods = {},
+                       bool timings = true, int indent = -1);
 
 }  // namespace hrs::planning

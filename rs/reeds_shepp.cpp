@@ -37,7 +37,6 @@ namespace {
 // of the turning radius, far from overflow, and hypot was its hottest call.
 inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
 
-
 constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kHalfPi = 0.5 * std::numbers::pi;
@@ -258,167 +257,212 @@ struct Best {
   }
 };
 
-//! Evaluates the formulas for the query (X, Y, Φ) and its time-flip
-//! (-X, Y, -Φ); S, C are sin Φ and cos Φ. `flags` adds kReflect/kBackwards
-//! to the codes. `hb` = |Φ| is a lower bound on the total arc length.
-//! `omc` and `opc` are 1 - cos Φ and 1 + cos Φ without cancellation.
-inline void solve_pair(double X, double Y, double phi, double S, double omc, double opc, int flags,
-                       double hb, Best& best) {
-  const bool backwards = flags & kBackwards;
-  const double ax = X - S, ay = Y - omc;
-  const double bx = X + S, by = Y - opc;
-  const double ra2 = ax * ax + ay * ay, rb2 = bx * bx + by * by;
-  // |B|² - 4 expanded (S² + opc² = 2 opc) so that it has no cancellation
-  // against 4 for nearby queries, where LSR's straight part is tiny.
-  const double rb2m4 = X * X + 2.0 * X * S + Y * Y - 2.0 * Y * opc - 2.0 * omc;
-  const double ra = std::sqrt(ra2), rb = std::sqrt(rb2);
-  double theta_a = 0.0, theta_b = 0.0;
-  bool have_a = false, have_b = false;
-  auto angle_a = [&]() {
+//! One query (X, Y, Φ) with its time-flip (-X, Y, -Φ), and the quantities
+//! the formula families share: A = (X - sin Φ, Y - 1 + cos Φ) and
+//! B = (X + sin Φ, Y - 1 - cos Φ), their norms, and their angles computed at
+//! most once (atan2 is the costly part). `flags` adds kReflect/kBackwards to
+//! the codes; `hb` = |Φ| is a lower bound on the total arc length.
+struct PairQuery {
+  PairQuery(double X, double Y, double phi, double S, double omc, double opc, int flags, double hb)
+      : flags(flags),
+        hb(hb),
+        ax(X - S),
+        ay(Y - omc),
+        bx(X + S),
+        by(Y - opc),
+        ra2(ax * ax + ay * ay),
+        rb2(bx * bx + by * by),
+        // |B|² - 4 expanded (S² + opc² = 2 opc) so that it has no
+        // cancellation against 4 for nearby queries, where LSR's straight
+        // part is tiny.
+        rb2m4(X * X + 2.0 * X * S + Y * Y - 2.0 * Y * opc - 2.0 * omc),
+        ra(std::sqrt(ra2)),
+        rb(std::sqrt(rb2)),
+        phis{phi, -phi} {}
+  double angle_a() {
     if (!have_a) theta_a = std::atan2(ay, ax), have_a = true;
     return theta_a;
-  };
-  auto angle_b = [&]() {
+  }
+  double angle_b() {
     if (!have_b) theta_b = std::atan2(by, bx), have_b = true;
     return theta_b;
-  };
-  const double phis[2] = {phi, -phi};
+  }
+  //! The code of a word of this query: base word, flags, time-flip of m = 1.
+  int code(int word, int m) const { return word | flags | (m ? kTimeflip : 0); }
 
-  if (!backwards) {
-    // 8.1 L+S+L+: A = u (cos t, sin t), v = φ - t.
-    if (ra + hb < best.len) {
-      const double th[2] = {angle_a(), kPi - angle_a()};
-      for (int m = 0; m < 2; ++m) {
-        double t = mod2pi(th[m]);
-        if (!nonneg(t)) continue;
-        double v = mod2pi(phis[m] - t);
-        if (!nonneg(v)) continue;
-        best.offer(t + ra + v, kLSL | flags | (m ? kTimeflip : 0), t, ra, v);
-      }
-    }
-    // 8.2 L+S+R+: |B|² = u² + 4, t = θ_B + atan2(2, u), v = t - φ.
-    if (rb2m4 >= -kTol) {
-      const double u = std::sqrt(std::max(0.0, rb2m4));
-      if (u + hb < best.len) {
-        const double alpha = std::atan2(2.0, u);
-        const double th[2] = {angle_b(), kPi - angle_b()};
-        for (int m = 0; m < 2; ++m) {
-          double t = mod2pi(th[m] + alpha);
-          if (!nonneg(t)) continue;
-          double v = mod2pi(t - phis[m]);
-          if (!nonneg(v)) continue;
-          best.offer(t + u + v, kLSR | flags | (m ? kTimeflip : 0), t, u, v);
-        }
-      }
-    }
+  int flags;
+  double hb;
+  double ax, ay, bx, by, ra2, rb2, rb2m4, ra, rb;
+  double phis[2];  //!< Φ of the query and of its time-flip
+  double theta_a = 0.0, theta_b = 0.0;
+  bool have_a = false, have_b = false;
+};
+
+// The formula families of Reeds and Shepp (1990), numbered as in their
+// §8; each offers the query's and its time-flip's solutions to `best`.
+
+//! 8.1 L+S+L+: A = u (cos t, sin t), v = φ - t.
+inline void csc_lsl(PairQuery& q, Best& best) {
+  if (!(q.ra + q.hb < best.len)) return;
+  const double th[2] = {q.angle_a(), kPi - q.angle_a()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m]);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(q.phis[m] - t);
+    if (!nonneg(v)) continue;
+    best.offer(t + q.ra + v, q.code(kLSL, m), t, q.ra, v);
   }
-  // 8.3 L+R-L±: |A| = 4 sin(-u/2), t = θ_A + u/2 + π, v = φ - t + u.
-  // Lower bound |u| = 2 asin(|A|/4) >= |A|/2.
-  if (ra <= 4.0 + kTol && std::max(0.5 * ra, hb) < best.len) {
-    const double u = -2.0 * std::asin(std::min(1.0, 0.25 * ra));
-    if (std::max(-u, hb) < best.len) {
-      const double th[2] = {angle_a(), kPi - angle_a()};
-      for (int m = 0; m < 2; ++m) {
-        double t = mod2pi(th[m] + 0.5 * u + kPi);
-        if (!nonneg(t)) continue;
-        const double v = mod2pi(phis[m] - t + u);
-        best.offer(t - u + std::abs(v), kLRL | flags | (m ? kTimeflip : 0), t, u, v);
-      }
-    }
+}
+
+//! 8.2 L+S+R+: |B|² = u² + 4, t = θ_B + atan2(2, u), v = t - φ.
+inline void csc_lsr(PairQuery& q, Best& best) {
+  if (!(q.rb2m4 >= -kTol)) return;
+  const double u = std::sqrt(std::max(0.0, q.rb2m4));
+  if (!(u + q.hb < best.len)) return;
+  const double alpha = std::atan2(2.0, u);
+  const double th[2] = {q.angle_b(), kPi - q.angle_b()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + alpha);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(t - q.phis[m]);
+    if (!nonneg(v)) continue;
+    best.offer(t + u + v, q.code(kLSR, m), t, u, v);
   }
+}
+
+//! 8.3 L+R-L±: |A| = 4 sin(-u/2), t = θ_A + u/2 + π, v = φ - t + u.
+//! Lower bound |u| = 2 asin(|A|/4) >= |A|/2.
+inline void ccc_lrl(PairQuery& q, Best& best) {
+  if (!(q.ra <= 4.0 + kTol && std::max(0.5 * q.ra, q.hb) < best.len)) return;
+  const double u = -2.0 * std::asin(std::min(1.0, 0.25 * q.ra));
+  if (!(std::max(-u, q.hb) < best.len)) return;
+  const double th[2] = {q.angle_a(), kPi - q.angle_a()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + 0.5 * u + kPi);
+    if (!nonneg(t)) continue;
+    const double v = mod2pi(q.phis[m] - t + u);
+    best.offer(t - u + std::abs(v), q.code(kLRL, m), t, u, v);
+  }
+}
+
+//! 8.7 L+R+L-R-: ρ = (2 + |B|)/4 = cos u; tauOmega with v = -u, where
+//! atan2(ηA' - ξB', ξA' + ηB') = θ_B + atan2(-B', A').
+inline void cccc_lrlr_a(PairQuery& q, Best& best) {
+  const double rho7 = 0.25 * (2.0 + q.rb);
+  if (!(rho7 <= 1.0 + kTol &&
+        std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho7)), q.hb) < best.len))
+    return;
+  const double u = std::acos(std::min(1.0, rho7));
+  if (!(std::max(2.0 * u, q.hb) < best.len)) return;
+  const double delta = mod2pi(2.0 * u);
+  const double su = std::sin(u), cu = std::cos(u);
+  const double sd = std::sin(delta), cd = std::cos(delta);
+  const double a_ = su - sd, b_ = cu - cd - 1.0;
+  const double rot = std::atan2(-b_, a_);
+  const double flip = 2.0 * (cd - 2.0 * cu) + 3.0 < 0.0 ? kPi : 0.0;
+  const double th[2] = {q.angle_b(), kPi - q.angle_b()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + rot + flip);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(t - 2.0 * u - q.phis[m]);
+    if (!nonpos(v)) continue;
+    best.offer(t + 2.0 * u - v, q.code(kLRLRa, m), t, u, v);
+  }
+}
+
+//! 8.8 L+R-L-R+: ρ = (20 - |B|²)/16 = cos u, u in [-π/2, 0]; tauOmega with
+//! v = u (δ = 0, so the flip term 5 - 4 cos u is always positive).
+inline void cccc_lrlr_b(PairQuery& q, Best& best) {
+  const double rho8 = (16.0 - q.rb2m4) / 16.0;
+  if (!(rho8 >= -kTol && rho8 <= 1.0 + kTol &&
+        std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho8)), q.hb) < best.len))
+    return;
+  const double u = -std::acos(std::clamp(rho8, 0.0, 1.0));
+  if (!(std::max(-2.0 * u, q.hb) < best.len)) return;
+  const double rot = std::atan2(2.0 - std::cos(u), std::sin(u));
+  const double th[2] = {q.angle_b(), kPi - q.angle_b()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + rot);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(t - q.phis[m]);
+    if (!nonneg(v)) continue;
+    best.offer(t - 2.0 * u + v, q.code(kLRLRb, m), t, u, v);
+  }
+}
+
+//! 8.9 L+R-(π/2)S-L-: |A|² = 4 + (2 - u)², t = θ_A + atan2(r, -2),
+//! v = φ - π/2 - t. Needs u <= 0, i.e. r >= 2.
+inline void ccsc_lrsl(PairQuery& q, Best& best, double hb_half) {
+  if (!(q.ra2 >= 8.0 - kTol)) return;
+  const double r = std::sqrt(q.ra2 - 4.0);
+  double u = 2.0 - r;
+  if (!(nonpos_len(u) && -u + hb_half < best.len)) return;
+  const double alpha = std::atan2(r, -2.0);
+  const double th[2] = {q.angle_a(), kPi - q.angle_a()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + alpha);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(q.phis[m] - kHalfPi - t);
+    if (!nonpos(v)) continue;
+    best.offer(t + kHalfPi - u - v, q.code(kLRSL, m), t, u, v);
+  }
+}
+
+//! 8.10 L+R-(π/2)S-R-: (-η, ξ) = |B| (cos t, sin t), u = 2 - |B|,
+//! v = t + π/2 - φ.
+inline void ccsc_lrsr(PairQuery& q, Best& best, double hb_half) {
+  if (!(q.rb >= 2.0 - kTol)) return;
+  double u = 2.0 - q.rb;
+  if (!(nonpos_len(u) && -u + hb_half < best.len)) return;
+  const double th[2] = {q.angle_b(), kPi - q.angle_b()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + kHalfPi);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(t + kHalfPi - q.phis[m]);
+    if (!nonpos(v)) continue;
+    best.offer(t + kHalfPi - u - v, q.code(kLRSR, m), t, u, v);
+  }
+}
+
+//! 8.11 L+R-(π/2)S-L-(π/2)R+: |B|² = 4 + (4 - u)², t = θ_B + atan2(4 - u, -2),
+//! v = t - φ. Needs u <= 0, i.e. |B|² >= 20.
+inline void ccscc_lrslr(PairQuery& q, Best& best) {
+  if (!(q.rb2m4 >= 16.0 - kTol)) return;
+  const double r = std::sqrt(q.rb2m4);
+  double u = 4.0 - r;
+  if (!(nonpos_len(u) && -u + std::max(kPi, q.hb) < best.len)) return;
+  const double alpha = std::atan2(r, -2.0);
+  const double th[2] = {q.angle_b(), kPi - q.angle_b()};
+  for (int m = 0; m < 2; ++m) {
+    double t = mod2pi(th[m] + alpha);
+    if (!nonneg(t)) continue;
+    double v = mod2pi(t - q.phis[m]);
+    if (!nonneg(v)) continue;
+    best.offer(t + kPi - u + v, q.code(kLRSLR, m), t, u, v);
+  }
+}
+
+//! Every family for the query (X, Y, Φ) and its time-flip; S is sin Φ, `omc`
+//! and `opc` are 1 - cos Φ and 1 + cos Φ without cancellation. With
+//! kBackwards in `flags`, the families whose backwards form another call
+//! covers are skipped.
+inline void solve_pair(double X, double Y, double phi, double S, double omc, double opc, int flags,
+                       double hb, Best& best) {
+  PairQuery q(X, Y, phi, S, omc, opc, flags, hb);
+  const bool backwards = flags & kBackwards;
   if (!backwards) {
-    // 8.7 L+R+L-R-: ρ = (2 + |B|)/4 = cos u; tauOmega with v = -u, where
-    // atan2(ηA' - ξB', ξA' + ηB') = θ_B + atan2(-B', A').
-    const double rho7 = 0.25 * (2.0 + rb);
-    if (rho7 <= 1.0 + kTol &&
-        std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho7)), hb) < best.len) {
-      const double u = std::acos(std::min(1.0, rho7));
-      if (std::max(2.0 * u, hb) < best.len) {
-        const double delta = mod2pi(2.0 * u);
-        const double su = std::sin(u), cu = std::cos(u);
-        const double sd = std::sin(delta), cd = std::cos(delta);
-        const double a_ = su - sd, b_ = cu - cd - 1.0;
-        const double rot = std::atan2(-b_, a_);
-        const double flip = 2.0 * (cd - 2.0 * cu) + 3.0 < 0.0 ? kPi : 0.0;
-        const double th[2] = {angle_b(), kPi - angle_b()};
-        for (int m = 0; m < 2; ++m) {
-          double t = mod2pi(th[m] + rot + flip);
-          if (!nonneg(t)) continue;
-          double v = mod2pi(t - 2.0 * u - phis[m]);
-          if (!nonpos(v)) continue;
-          best.offer(t + 2.0 * u - v, kLRLRa | flags | (m ? kTimeflip : 0), t, u, v);
-        }
-      }
-    }
-    // 8.8 L+R-L-R+: ρ = (20 - |B|²)/16 = cos u, u in [-π/2, 0]; tauOmega with
-    // v = u (δ = 0, so the flip term 5 - 4 cos u is always positive).
-    const double rho8 = (16.0 - rb2m4) / 16.0;
-    if (rho8 >= -kTol && rho8 <= 1.0 + kTol &&
-        std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho8)), hb) < best.len) {
-      const double u = -std::acos(std::clamp(rho8, 0.0, 1.0));
-      if (std::max(-2.0 * u, hb) < best.len) {
-        const double rot = std::atan2(2.0 - std::cos(u), std::sin(u));
-        const double th[2] = {angle_b(), kPi - angle_b()};
-        for (int m = 0; m < 2; ++m) {
-          double t = mod2pi(th[m] + rot);
-          if (!nonneg(t)) continue;
-          double v = mod2pi(t - phis[m]);
-          if (!nonneg(v)) continue;
-          best.offer(t - 2.0 * u + v, kLRLRb | flags | (m ? kTimeflip : 0), t, u, v);
-        }
-      }
-    }
+    csc_lsl(q, best);
+    csc_lsr(q, best);
+  }
+  ccc_lrl(q, best);
+  if (!backwards) {
+    cccc_lrlr_a(q, best);
+    cccc_lrlr_b(q, best);
   }
   const double hb_half = std::max(kHalfPi, hb);
-  // 8.9 L+R-(π/2)S-L-: |A|² = 4 + (2 - u)², t = θ_A + atan2(r, -2),
-  // v = φ - π/2 - t. Needs u <= 0, i.e. r >= 2.
-  if (ra2 >= 8.0 - kTol) {
-    const double r = std::sqrt(ra2 - 4.0);
-    double u = 2.0 - r;
-    if (nonpos_len(u) && -u + hb_half < best.len) {
-      const double alpha = std::atan2(r, -2.0);
-      const double th[2] = {angle_a(), kPi - angle_a()};
-      for (int m = 0; m < 2; ++m) {
-        double t = mod2pi(th[m] + alpha);
-        if (!nonneg(t)) continue;
-        double v = mod2pi(phis[m] - kHalfPi - t);
-        if (!nonpos(v)) continue;
-        best.offer(t + kHalfPi - u - v, kLRSL | flags | (m ? kTimeflip : 0), t, u, v);
-      }
-    }
-  }
-  // 8.10 L+R-(π/2)S-R-: (-η, ξ) = |B| (cos t, sin t), u = 2 - |B|,
-  // v = t + π/2 - φ.
-  if (rb >= 2.0 - kTol) {
-    double u = 2.0 - rb;
-    if (nonpos_len(u) && -u + hb_half < best.len) {
-      const double th[2] = {angle_b(), kPi - angle_b()};
-      for (int m = 0; m < 2; ++m) {
-        double t = mod2pi(th[m] + kHalfPi);
-        if (!nonneg(t)) continue;
-        double v = mod2pi(t + kHalfPi - phis[m]);
-        if (!nonpos(v)) continue;
-        best.offer(t + kHalfPi - u - v, kLRSR | flags | (m ? kTimeflip : 0), t, u, v);
-      }
-    }
-  }
-  // 8.11 L+R-(π/2)S-L-(π/2)R+: |B|² = 4 + (4 - u)², t = θ_B + atan2(4 - u, -2),
-  // v = t - φ. Needs u <= 0, i.e. |B|² >= 20.
-  if (!backwards && rb2m4 >= 16.0 - kTol) {
-    const double r = std::sqrt(rb2m4);
-    double u = 4.0 - r;
-    if (nonpos_len(u) && -u + std::max(kPi, hb) < best.len) {
-      const double alpha = std::atan2(r, -2.0);
-      const double th[2] = {angle_b(), kPi - angle_b()};
-      for (int m = 0; m < 2; ++m) {
-        double t = mod2pi(th[m] + alpha);
-        if (!nonneg(t)) continue;
-        double v = mod2pi(t - phis[m]);
-        if (!nonneg(v)) continue;
-        best.offer(t + kPi - u + v, kLRSLR | flags | (m ? kTimeflip : 0), t, u, v);
-      }
-    }
-  }
+  ccsc_lrsl(q, best, hb_half);
+  ccsc_lrsr(q, best, hb_half);
+  if (!backwards) ccscc_lrslr(q, best);
 }
 
 Best solve(const Local& q) {
@@ -691,7 +735,14 @@ Path concatenate(const Path& first, const Path& second) {
 // ---- Shortest paths ---------------------------------------------------------
 
 Path shortest_path(const Pose2& from, const Pose2& to, double radius) {
-  return make_path(solve(to_local(from, to, radius)), radius);
+  Path p = make_path(solve(to_local(from, to, radius)), radius);
+#ifndef NDEBUG
+  // As OMPL's ReedsSheppStateSpace does in debug builds: the path driven from
+  // `from` ends at `to` (up to rounding that grows with the distances).
+  const double scale = 1.0 + radius + std::hypot(to.x - from.x, to.y - from.y);
+  assert(geometry::pose_gap(end_pose(from, p), to) <= 1e-6 * scale);
+#endif
+  return p;
 }
 
 double shortest_length(const Pose2& from, const Pose2& to, double radius) {
