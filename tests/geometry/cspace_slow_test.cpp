@@ -12,19 +12,19 @@
 #include <random>
 
 #include "geometry/cspace.h"
-#include "tests/geometry/fixtures.h"
-#include "tests/geometry/reference.h"
+#include "tests/support/reference.h"
+#include "tests/support/scenes.h"
 
 namespace hrs::geometry {
 namespace {
 
-using testing::ExactReference;
-using testing::random_pose;
+using test_support::ExactReference;
+using test_support::random_pose;
 constexpr double kPi = std::numbers::pi;
 
 std::vector<Scene> all_scenes() {
-  std::vector<Scene> out{testing::l_shaped_scene()};
-  for (const std::string& f : testing::scene_files()) out.push_back(load_scene(f));
+  std::vector<Scene> out{test_support::l_shaped_scene()};
+  for (const std::string& f : test_support::scene_files()) out.push_back(load_scene(f));
   return out;
 }
 

@@ -10,14 +10,14 @@
 #include <random>
 
 #include "geometry/cspace.h"
-#include "tests/geometry/fixtures.h"
-#include "tests/geometry/reference.h"
+#include "tests/support/reference.h"
+#include "tests/support/scenes.h"
 
 namespace hrs::geometry {
 namespace {
 
-using testing::ExactReference;
-using testing::random_pose;
+using test_support::ExactReference;
+using test_support::random_pose;
 constexpr double kPi = std::numbers::pi;
 
 struct Counts {
@@ -46,7 +46,7 @@ Counts check_poses(const Scene& scene, int n, std::uint64_t seed) {
 }
 
 TEST(CSpace, FreePosesAreCertifiedInLShapedRoomWithNonConvexObject) {
-  const Counts c = check_poses(testing::l_shaped_scene(), 20000, 7);
+  const Counts c = check_poses(test_support::l_shaped_scene(), 20000, 7);
   EXPECT_EQ(c.missed, 0);
   EXPECT_GT(c.free, 1000);  // the test must exercise free answers
   const double rate = double(c.conservative) / double(c.ref_free);
@@ -56,7 +56,7 @@ TEST(CSpace, FreePosesAreCertifiedInLShapedRoomWithNonConvexObject) {
 }
 
 TEST(CSpace, EmptyRoomCentreIsFreeAndOutsideIsNot) {
-  CSpace cs(testing::empty_room(4, 3));
+  CSpace cs(test_support::empty_room(4, 3));
   EXPECT_TRUE(cs.is_free({2, 1.5, 0.3}));
   EXPECT_FALSE(cs.is_free({-1, 1.5, 0}));
   EXPECT_FALSE(cs.is_free({0.2, 1.5, 0}));  // half the chair through the wall
@@ -67,7 +67,7 @@ TEST(CSpace, EmptyRoomCentreIsFreeAndOutsideIsNot) {
 }
 
 TEST(CSpace, StraightAndArcAgainstWalls) {
-  CSpace cs(testing::empty_room(4, 3));
+  CSpace cs(test_support::empty_room(4, 3));
   EXPECT_TRUE(cs.straight_free({1, 1.5, 0}, 2.0));
   EXPECT_FALSE(cs.straight_free({1, 1.5, 0}, 3.0));   // ends through the east wall
   EXPECT_FALSE(cs.straight_free({3, 1.5, 0}, -2.6));  // reverses through the west wall
@@ -76,7 +76,7 @@ TEST(CSpace, StraightAndArcAgainstWalls) {
   // reaches 1.7 + |(0.7 + 0.325, 0.55)| = 2.863 m: free in a 3 m room, not in 2.8 m.
   EXPECT_TRUE(cs.arc_free({2, 1.0, 0}, 0.7, 2 * kPi, 1));
   EXPECT_TRUE(cs.arc_free({2, 1.0, 0}, 0.7, 2 * kPi, -1));
-  CSpace low(testing::empty_room(4, 2.8));
+  CSpace low(test_support::empty_room(4, 2.8));
   EXPECT_TRUE(low.arc_free({2, 1.0, 0}, 0.7, kPi / 4, 1));
   EXPECT_FALSE(low.arc_free({2, 1.0, 0}, 0.7, 2 * kPi, 1));
   // Right turns mirror left turns about the heading line.
@@ -85,7 +85,7 @@ TEST(CSpace, StraightAndArcAgainstWalls) {
 }
 
 TEST(CSpace, ClearanceBetweenParallelWalls) {
-  CSpace cs(testing::empty_room(10, 2));
+  CSpace cs(test_support::empty_room(10, 2));
   const Clearance c = cs.clearance({5, 0.7, 0});
   EXPECT_NEAR(c.left, 1.3, 1e-12);
   EXPECT_NEAR(c.right, 0.7, 1e-12);
@@ -95,7 +95,7 @@ TEST(CSpace, ClearanceBetweenParallelWalls) {
 }
 
 TEST(CSpace, ClearanceInLCorner) {
-  Scene s = testing::l_shaped_scene();
+  Scene s = test_support::l_shaped_scene();
   s.room.polygon = {{0, 0}, {4, 0}, {4, 2}, {2, 2}, {2, 4}, {0, 4}};
   s.objects.clear();
   CSpace cs(s);
@@ -112,7 +112,7 @@ TEST(CSpace, ClearanceInLCorner) {
 }
 
 TEST(CSpace, ClearanceSeesFurniture) {
-  Scene s = testing::empty_room(10, 4);
+  Scene s = test_support::empty_room(10, 4);
   Object box;
   box.id = "box";
   box.footprint = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {-0.5, 0.5}};
@@ -125,7 +125,7 @@ TEST(CSpace, ClearanceSeesFurniture) {
 }
 
 TEST(CSpace, IncrementalUpdateEqualsRebuild) {
-  Scene scene = testing::l_shaped_scene();
+  Scene scene = test_support::l_shaped_scene();
   CSpace inc(scene);
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> step(-0.4, 0.4), turn(-1.0, 1.0);
@@ -196,7 +196,7 @@ BruteClearance brute_clearance(const Scene& scene, const Pose2& pose) {
 
 TEST(CSpace, NearestObstaclesMatchBruteForceAndObjectClearances) {
   long cases = 0, object_owned = 0, wall_owned = 0;
-  for (const std::string& file : testing::scene_files()) {
+  for (const std::string& file : test_support::scene_files()) {
     Scene scene = load_scene(file);
     CSpace cs(scene);
     std::mt19937_64 rng(21);

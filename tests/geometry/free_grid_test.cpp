@@ -13,29 +13,29 @@
 #include <random>
 
 #include "geometry/cspace.h"
-#include "tests/geometry/fixtures.h"
-#include "tests/geometry/reference.h"
+#include "tests/support/reference.h"
+#include "tests/support/scenes.h"
 
 namespace hrs::geometry {
 namespace {
 
-using hrs::testing::ExactReference;
-using hrs::testing::split_room;
-using hrs::testing::unit01;
+using hrs::uniform01;
+using hrs::test_support::ExactReference;
+using hrs::test_support::split_room;
 
 //! The scenes under test: the L-shaped room and every shipped scene, each
 //! also with its movable objects displaced at random (overlaps allowed).
 std::vector<Scene> test_scenes(std::mt19937_64& rng) {
-  std::vector<Scene> out{hrs::testing::l_shaped_scene()};
-  for (const std::string& f : hrs::testing::scene_files()) out.push_back(load_scene(f));
+  std::vector<Scene> out{hrs::test_support::l_shaped_scene()};
+  for (const std::string& f : hrs::test_support::scene_files()) out.push_back(load_scene(f));
   const std::size_t n = out.size();
   for (std::size_t i = 0; i < n; ++i) {
     Scene s = out[i];
     for (Object& o : s.objects) {
       if (o.fixed) continue;
-      o.pose.x += 0.6 * (2 * unit01(rng) - 1);
-      o.pose.y += 0.6 * (2 * unit01(rng) - 1);
-      o.pose.theta += 0.8 * (2 * unit01(rng) - 1);
+      o.pose.x += 0.6 * (2 * uniform01(rng) - 1);
+      o.pose.y += 0.6 * (2 * uniform01(rng) - 1);
+      o.pose.theta += 0.8 * (2 * uniform01(rng) - 1);
     }
     out.push_back(std::move(s));
   }
@@ -45,8 +45,8 @@ std::vector<Scene> test_scenes(std::mt19937_64& rng) {
 //! A uniformly random pose in the closed cell.
 Pose2 pose_in_cell(const FreeGrid& g, std::size_t cell, std::mt19937_64& rng) {
   const Pose2 c = g.centre(cell);
-  return {c.x + g.hx() * (unit01(rng) - 0.5), c.y + g.hy() * (unit01(rng) - 0.5),
-          c.theta + g.slice_width() * (unit01(rng) - 0.5)};
+  return {c.x + g.hx() * (uniform01(rng) - 0.5), c.y + g.hy() * (uniform01(rng) - 0.5),
+          c.theta + g.slice_width() * (uniform01(rng) - 0.5)};
 }
 
 //! True if a 26-neighbour of the cell is not blocked (the cell is on the
@@ -106,7 +106,7 @@ TEST(FreeGrid, CertifiedFreePosesNeverLieInBlockedCells) {
     const CSpace cspace(scene);
     int free_poses = 0;
     for (int i = 0; i < 100'000; ++i) {
-      const Pose2 p = hrs::testing::random_pose(scene, rng);
+      const Pose2 p = hrs::test_support::random_pose(scene, rng);
       if (!cspace.is_free(p)) continue;
       ++free_poses;
       ASSERT_FALSE(grid.blocked(grid.cell_of(p)))
@@ -121,12 +121,12 @@ TEST(FreeGrid, MostCollidingPosesAreInBlockedCells) {
   // collides by more than the core's margin lies in a blocked cell, so
   // blocked cells hold the large majority of the colliding poses.
   std::mt19937_64 rng(11);
-  const Scene scene = load_scene(hrs::testing::scene_files().front());
+  const Scene scene = load_scene(hrs::test_support::scene_files().front());
   const FreeGrid grid(scene);
   const ExactReference ref(scene);
   int colliding = 0, blocked = 0;
   for (int i = 0; i < 3000; ++i) {
-    const Pose2 p = hrs::testing::random_pose(scene, rng);
+    const Pose2 p = hrs::test_support::random_pose(scene, rng);
     if (ref.pose_free(p)) continue;
     ++colliding;
     blocked += grid.blocked(grid.cell_of(p)) ? 1 : 0;
@@ -138,13 +138,13 @@ TEST(FreeGrid, MostCollidingPosesAreInBlockedCells) {
 
 TEST(FreeGrid, IncrementalMovesEqualRebuild) {
   std::mt19937_64 rng(3);
-  Scene scene = hrs::testing::l_shaped_scene();
+  Scene scene = hrs::test_support::l_shaped_scene();
   FreeGrid grid(scene, {0.05, 72});
   for (int step = 0; step < 60; ++step) {
     const int i = static_cast<int>(rng() % scene.objects.size());
     Pose2& p = scene.objects[i].pose;
-    p.x = 0.5 + 5.0 * unit01(rng), p.y = 0.5 + 5.0 * unit01(rng);
-    if (step % 2 == 0) p.theta = std::numbers::pi * (2 * unit01(rng) - 1);
+    p.x = 0.5 + 5.0 * uniform01(rng), p.y = 0.5 + 5.0 * uniform01(rng);
+    if (step % 2 == 0) p.theta = std::numbers::pi * (2 * uniform01(rng) - 1);
     grid.move_object(i, p);
     if (step % 10 != 9) continue;
     const FreeGrid fresh(scene, {0.05, 72});

@@ -16,8 +16,8 @@
 #include "geometry/cspace.h"
 #include "geometry/polygon_ops.h"
 #include "optimize/design_io.h"
-#include "planning/motion_validator.h"
 #include "rs/reeds_shepp.h"
+#include "tests/support/paths.h"
 
 namespace hrs::optimize {
 namespace {
@@ -102,10 +102,10 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
           << o.id << " overlaps " << out.objects[j].id;
   }
 
-  // Tours, re-validated in the final layout with the continuous checks.
-  geometry::CSpace cspace(out);
+  // Tours, re-validated in the final layout by the exact CGAL reference
+  // (tests/support), independent of the production C-space.
+  const test_support::ReferenceChecker reference(out);
   const double radius = out.wheelchair.turning_radius;
-  planning::MotionValidator validator(cspace, radius);
   const json tours = json::parse(read(dir / "tours.json"));
   EXPECT_EQ(tours["tours"].size(), static_cast<std::size_t>(out.activity.sequences));
   int found = 0;
@@ -132,9 +132,10 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
       EXPECT_NEAR(end.x, to.x, 1e-6);
       EXPECT_NEAR(end.y, to.y, 1e-6);
       EXPECT_NEAR(geometry::wrap_angle(end.theta - to.theta), 0.0, 1e-6);
-      // Certified free in 5 cm pieces (whole long arcs have looser covers).
-      EXPECT_GE(validator.free_prefix(from, path, 0.05), path.length() - 1e-9)
-          << "leg " << i << " (" << seq[i] << " -> " << seq[i + 1] << ") is not certified free";
+      // Free by the exact reference at every pose 5 mm apart.
+      test_support::expect_valid_path(
+          reference, from, to, path, radius,
+          "leg " + std::to_string(i) + " (" + seq[i] + " -> " + seq[i + 1] + ")", 0.005);
       // The leg ends at the object of the sequence: the chair stops `gap` away.
       const int obj = out.find_object(seq[i + 1]);
       EXPECT_GE(obj, 0);

@@ -20,7 +20,7 @@ int feasible_tours(const geometry::Scene& layout, const std::vector<Sequence>& s
   for (std::size_t k = 0; k < sequences.size(); ++k) {
     planning::TourPlanner planner(layout, cspace, {}, 9001 + k);
     planning::Tour tour = planner.plan(sequences[k].nodes);
-    recheck_tour(cspace, layout.wheelchair.turning_radius, tour);
+    planning::recheck_tour(cspace, layout.wheelchair.turning_radius, tour);
     found += tour.found ? 1 : 0;
   }
   return found;

@@ -17,7 +17,7 @@
 #include "planning/goals.h"
 #include "planning/rrt.h"
 #include "planning/tour.h"
-#include "tests/planning/support.h"
+#include "tests/support/paths.h"
 
 namespace hrs::planning {
 namespace {
@@ -47,26 +47,26 @@ std::string scene_name(const std::string& file) {
 }
 
 TEST(LegPlanner, RandomLegsAreValidPathsInEveryScene) {
-  const auto files = testing::planning_scene_files();
+  const auto files = test_support::planning_scene_files();
   ASSERT_FALSE(files.empty());
   for (const std::string& file : files) {
     const geometry::Scene scene = geometry::load_scene(file);
     const geometry::CSpace cspace(scene);
-    const testing::ReferenceChecker reference(scene);
+    const test_support::ReferenceChecker reference(scene);
     const double radius = scene.wheelchair.turning_radius;
     LegPlanner planner(scene, cspace);
     std::mt19937_64 rng(2024);
     Summary sum;
     for (int i = 0; i < 200; ++i) {
-      const Pose2 from = testing::random_free_pose(scene, cspace, rng);
-      const Pose2 to = testing::random_free_pose(scene, cspace, rng);
+      const Pose2 from = test_support::random_free_pose(scene, cspace, rng);
+      const Pose2 to = test_support::random_free_pose(scene, cspace, rng);
       const LegResult r = planner.plan(from, to, 1000 + i);
       ++sum.queries;
       sum.times_ms.push_back(r.stats.time_ms);
       EXPECT_LE(r.stats.iterations, planner.options().max_iterations);
       if (!r.found) continue;
       ++sum.found;
-      sum.poses_checked += testing::expect_valid_path(
+      sum.poses_checked += test_support::expect_valid_path(
           reference, from, to, r.path, radius, scene_name(file) + " leg " + std::to_string(i));
     }
     sum.print("random legs", scene_name(file));
@@ -77,12 +77,12 @@ TEST(LegPlanner, RandomLegsAreValidPathsInEveryScene) {
 }
 
 TEST(LegPlanner, ObjectToObjectLegsSuccessAndTime) {
-  const auto files = testing::planning_scene_files();
+  const auto files = test_support::planning_scene_files();
   ASSERT_FALSE(files.empty());
   for (const std::string& file : files) {
     const geometry::Scene scene = geometry::load_scene(file);
     const geometry::CSpace cspace(scene);
-    const testing::ReferenceChecker reference(scene);
+    const test_support::ReferenceChecker reference(scene);
     const double radius = scene.wheelchair.turning_radius;
     std::vector<std::vector<GoalPose>> goals;
     std::vector<int> usable;
@@ -105,7 +105,7 @@ TEST(LegPlanner, ObjectToObjectLegsSuccessAndTime) {
       sum.times_ms.push_back(r.stats.time_ms);
       if (!r.found) continue;
       ++sum.found;
-      sum.poses_checked += testing::expect_valid_path(
+      sum.poses_checked += test_support::expect_valid_path(
           reference, from, to, r.path, radius,
           scene_name(file) + " " + scene.objects[a].id + "->" + scene.objects[b].id);
     }

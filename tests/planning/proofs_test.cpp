@@ -17,7 +17,7 @@
 #include "geometry/free_grid.h"
 #include "planning/reuse.h"
 #include "planning/rrt.h"
-#include "tests/planning/support.h"
+#include "tests/support/paths.h"
 
 namespace hrs::planning {
 namespace {
@@ -36,7 +36,7 @@ bool adjacent(const FreeGrid& g, std::size_t a, std::size_t b) {
 
 TEST(Proofs, FoundPathsCrossOnlyUnblockedNeighbouringCellsAndAreNeverProvenImpossible) {
   int paths = 0;
-  for (const std::string& file : testing::planning_scene_files()) {
+  for (const std::string& file : test_support::planning_scene_files()) {
     const geometry::Scene scene = geometry::load_scene(file);
     const geometry::CSpace cspace(scene);
     const FreeGrid grid(scene);
@@ -44,8 +44,8 @@ TEST(Proofs, FoundPathsCrossOnlyUnblockedNeighbouringCellsAndAreNeverProvenImpos
     ReachabilityQuery query;
     std::mt19937_64 rng(99);
     for (int i = 0; i < 60; ++i) {
-      const Pose2 a = testing::random_free_pose(scene, cspace, rng);
-      const Pose2 b = testing::random_free_pose(scene, cspace, rng);
+      const Pose2 a = test_support::random_free_pose(scene, cspace, rng);
+      const Pose2 b = test_support::random_free_pose(scene, cspace, rng);
       const LegResult r = planner.plan(a, b, 1 + i);
       if (!r.found) continue;
       ++paths;
@@ -65,9 +65,9 @@ TEST(Proofs, FoundPathsCrossOnlyUnblockedNeighbouringCellsAndAreNeverProvenImpos
   EXPECT_GT(paths, 150);
 }
 
-//! testing::split_room with a table in the right half (a leg's goal object).
+//! test_support::split_room with a table in the right half (a leg's goal object).
 geometry::Scene split_room(double gap) {
-  geometry::Scene s = testing::split_room(gap);
+  geometry::Scene s = test_support::split_room(gap);
   geometry::Object table;
   table.id = "table";
   table.footprint = {{-0.3, -0.3}, {0.3, -0.3}, {0.3, 0.3}, {-0.3, 0.3}};
@@ -124,8 +124,8 @@ TEST(Proofs, RandomLegsProvenImpossibleAreNotFoundByTenTimesTheBudget) {
     LegPlanner planner(scene, cspace, long_run);
     std::mt19937_64 rng(5);
     for (int i = 0; i < 24; ++i) {
-      const Pose2 a = testing::random_free_pose(scene, cspace, rng);
-      const Pose2 b = testing::random_free_pose(scene, cspace, rng);
+      const Pose2 a = test_support::random_free_pose(scene, cspace, rng);
+      const Pose2 b = test_support::random_free_pose(scene, cspace, rng);
       ++pairs;
       const bool across = (a.x < 3.0) != (b.x < 3.0);
       const auto answer = query.query(grid, a, b, 10'000'000);

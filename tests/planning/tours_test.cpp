@@ -16,7 +16,7 @@
 #include "planning/goals.h"
 #include "planning/tour.h"
 #include "planning/tour_json.h"
-#include "tests/planning/support.h"
+#include "tests/support/paths.h"
 
 namespace hrs::planning {
 namespace {
@@ -42,13 +42,13 @@ std::vector<std::string> random_sequence(const geometry::Scene& scene, int visit
 }
 
 TEST(TourPlanner, FoundToursJoinStopFacingObjectsOnAllowedSidesAndAreFree) {
-  const auto files = testing::planning_scene_files();
+  const auto files = test_support::planning_scene_files();
   ASSERT_FALSE(files.empty());
   int found_anywhere = 0;
   for (const std::string& file : files) {
     const geometry::Scene scene = geometry::load_scene(file);
     const geometry::CSpace cspace(scene);
-    const testing::ReferenceChecker reference(scene);
+    const test_support::ReferenceChecker reference(scene);
     const double radius = scene.wheelchair.turning_radius;
     std::mt19937_64 rng(99);
     int found = 0, total = 0;
@@ -90,11 +90,11 @@ TEST(TourPlanner, FoundToursJoinStopFacingObjectsOnAllowedSidesAndAreFree) {
         const auto approach = o.approach_or_default();
         EXPECT_TRUE(approach.sides[static_cast<int>(side_of(o, o.pose, leg.to.position()))])
             << what;
-        testing::expect_valid_path(reference, leg.from, leg.to, leg.path, radius, what);
+        test_support::expect_valid_path(reference, leg.from, leg.to, leg.path, radius, what);
         // Waypoints: from `from` to `to`, at most 5 cm apart.
         ASSERT_FALSE(leg.waypoints.empty());
-        EXPECT_LE(testing::pose_error(leg.waypoints.front(), leg.from), 1e-12) << what;
-        EXPECT_LE(testing::pose_error(leg.waypoints.back(), leg.to), 1e-6) << what;
+        EXPECT_LE(test_support::pose_error(leg.waypoints.front(), leg.from), 1e-12) << what;
+        EXPECT_LE(test_support::pose_error(leg.waypoints.back(), leg.to), 1e-6) << what;
         for (std::size_t w = 1; w < leg.waypoints.size(); ++w) {
           EXPECT_LE(geometry::norm(leg.waypoints[w].position() - leg.waypoints[w - 1].position()),
                     kWaypointStep + 1e-9)
@@ -119,7 +119,7 @@ TEST(TourPlanner, FoundToursJoinStopFacingObjectsOnAllowedSidesAndAreFree) {
 }
 
 TEST(TourPlanner, SameSeedSameTourAndJsonHasTheDesignShapes) {
-  const auto files = testing::planning_scene_files();
+  const auto files = test_support::planning_scene_files();
   ASSERT_FALSE(files.empty());
   const geometry::Scene scene = geometry::load_scene(files.front());
   const geometry::CSpace cspace(scene);

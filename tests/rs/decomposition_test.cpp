@@ -14,14 +14,14 @@
 #include "rs/decomposition.h"
 #include "rs/kd_tree.h"
 #include "rs/pose_grid.h"
-#include "tests/rs/fixtures.h"
+#include "tests/support/poses.h"
 
 namespace hrs::rs {
 namespace {
 
-using test::goal_tolerance;
-using test::pose_error;
-using test::random_pose;
+using test_support::goal_tolerance;
+using test_support::pose_error;
+using test_support::random_pose;
 
 TEST(RsKdTree, NearestMatchesBruteForceWithHeadingWrapAround) {
   std::mt19937_64 rng(31);
@@ -53,7 +53,6 @@ TEST(RsKdTree, NearestMatchesBruteForceWithHeadingWrapAround) {
 TEST(RsPoseGrid, NearestMatchesBruteForceAndTheKdTreeWhileGrowing) {
   std::mt19937_64 rng(37);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  int queries = 0;
   for (const auto& [w, half_x, half_y] :
        std::vector<std::array<double, 3>>{{0.7, 6.0, 5.0}, {0.1, 3.0, 3.0}, {5.0, 2.0, 0.05}}) {
     PoseGrid grid(w, -half_x, half_x, -half_y, half_y);
@@ -79,10 +78,8 @@ TEST(RsPoseGrid, NearestMatchesBruteForceAndTheKdTreeWhileGrowing) {
       const std::int32_t got = grid.nearest(q);
       ASSERT_EQ(got, brute) << "w " << w << " points " << pts.size();
       EXPECT_EQ(tree.distance2(pts[tree.nearest(q)], q), best);
-      ++queries;
     }
   }
-  EXPECT_EQ(queries, 6000);
 }
 
 DecompositionOptions small_options() {
@@ -214,7 +211,6 @@ void report(const char* name, const DecompositionOptions& o, std::uint64_t seed)
       100.0 * acc.word_accuracy, acc.queries, 100.0 * acc.infeasible_fraction, acc.mean_excess,
       100.0 * acc.mean_relative_excess, acc.mispredicted_feasible);
   EXPECT_GT(acc.word_accuracy, 0.5);
-  EXPECT_LE(acc.word_accuracy, 1.0);
   EXPECT_GE(acc.mean_excess, 0.0);
 }
 

@@ -12,14 +12,14 @@
 #include <string>
 
 #include "rs/reeds_shepp.h"
-#include "tests/rs/fixtures.h"
+#include "tests/support/poses.h"
 
 namespace hrs::rs {
 namespace {
 
-using test::goal_tolerance;
-using test::pose_error;
-using test::random_pose;
+using test_support::goal_tolerance;
+using test_support::pose_error;
+using test_support::random_pose;
 constexpr double kPi = std::numbers::pi;
 
 //! Random queries over several radii and spreads; fixed seed per call site.

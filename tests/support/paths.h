@@ -1,7 +1,7 @@
 #pragma once
 // Shared helpers of the planning suites: the scene files, random free poses,
 // and an independent check of a returned path (structure, ends, and collision
-// by the exact CGAL reference of tests/geometry/reference.h, never by the
+// by the exact CGAL reference of tests/support/reference.h, never by the
 // planner's own C-space).
 
 #include <gtest/gtest.h>
@@ -17,10 +17,11 @@
 #include "geometry/cspace.h"
 #include "geometry/scene.h"
 #include "rs/reeds_shepp.h"
-#include "tests/geometry/fixtures.h"
-#include "tests/geometry/reference.h"
+#include "tests/support/poses.h"
+#include "tests/support/reference.h"
+#include "tests/support/scenes.h"
 
-namespace hrs::testing {
+namespace hrs::test_support {
 
 //! Paths of the scene files shipped in scenes/ (sorted).
 inline std::vector<std::string> planning_scene_files() { return scene_files(); }
@@ -111,11 +112,6 @@ class ReferenceChecker {
   mutable std::size_t checks_ = 0, exact_checks_ = 0;
 };
 
-inline double pose_error(const geometry::Pose2& a, const geometry::Pose2& b) {
-  return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y),
-                   std::abs(geometry::wrap_angle(a.theta - b.theta))});
-}
-
 //! Checks every property a returned path must have; returns the number of
 //! reference pose checks done. `what` labels failures.
 inline std::size_t expect_valid_path(const ReferenceChecker& reference, const geometry::Pose2& from,
@@ -150,4 +146,4 @@ inline std::size_t expect_valid_path(const ReferenceChecker& reference, const ge
   return poses.size();
 }
 
-}  // namespace hrs::testing
+}  // namespace hrs::test_support

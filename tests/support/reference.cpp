@@ -1,4 +1,4 @@
-#include "tests/geometry/reference.h"
+#include "tests/support/reference.h"
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -10,7 +10,7 @@
 #include <list>
 #include <numbers>
 
-namespace hrs::testing {
+namespace hrs::test_support {
 namespace {
 using K = CGAL::Exact_predicates_exact_constructions_kernel;
 using FT = K::FT;
@@ -131,4 +131,4 @@ bool ExactReference::pose_free(const geometry::Pose2& pose) const {
   return true;
 }
 
-}  // namespace hrs::testing
+}  // namespace hrs::test_support

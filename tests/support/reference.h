@@ -11,7 +11,7 @@
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 
-namespace hrs::testing {
+namespace hrs::test_support {
 
 class ExactReference {
  public:
@@ -28,4 +28,4 @@ class ExactReference {
   std::unique_ptr<Impl> impl_;
 };
 
-}  // namespace hrs::testing
+}  // namespace hrs::test_support

@@ -9,9 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "geometry/random.h"
 #include "geometry/scene.h"
+#include "tests/support/poses.h"
 
-namespace hrs::testing {
+namespace hrs::test_support {
 
 inline geometry::Scene l_shaped_scene() {
   using geometry::Object;
@@ -49,9 +51,6 @@ inline geometry::Scene empty_room(double width, double depth) {
   return s;
 }
 
-//! A uniform double in [0, 1) from 53 random bits.
-inline double unit01(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
-
 //! A 6 × 3 m room split at x = 3 by a fixed 0.2 m partition that leaves a
 //! gap of `gap` metres at the top (the chair is 0.65 m wide).
 inline geometry::Scene split_room(double gap) {
@@ -79,16 +78,4 @@ inline std::vector<std::string> scene_files() {
   return out;
 }
 
-//! A uniform random pose in the room's bounding box, heading in [−π, π).
-inline geometry::Pose2 random_pose(const geometry::Scene& s, std::mt19937_64& rng) {
-  double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
-  for (const geometry::Vec2& v : s.room.polygon) {
-    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
-    ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
-  }
-  std::uniform_real_distribution<double> ux(xmin, xmax), uy(ymin, ymax),
-      ut(-std::numbers::pi, std::numbers::pi);
-  return {ux(rng), uy(rng), ut(rng)};
-}
-
-}  // namespace hrs::testing
+}  // namespace hrs::test_support

@@ -1,0 +1,120 @@
+// The nearest-node index against a linear scan (insertions, removals,
+// heading wrap) and the path operations the planner builds trees with.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "geometry/random.h"
+#include "planning/nearest.h"
+#include "planning/path_ops.h"
+#include "rs/reeds_shepp.h"
+
+namespace hrs::planning {
+namespace {
+
+using geometry::Pose2;
+using hrs::uniform01;
+
+TEST(PoseNearest, KdTreeMatchesLinearScanIncludingHeadingWrap) {
+  std::mt19937_64 rng(7);
+  PoseNearest tree(0.7);
+  std::vector<Pose2> poses;
+  for (int i = 0; i < 4000; ++i) {
+    // Half the headings crowd around ±pi, where wrap-around matters.
+    const double t = (i % 2)
+                         ? std::numbers::pi * (2 * uniform01(rng) - 1)
+                         : geometry::wrap_angle(std::numbers::pi + 0.3 * (2 * uniform01(rng) - 1));
+    poses.push_back({5 * uniform01(rng), 4 * uniform01(rng), t});
+    tree.insert(poses.back(), 1000 + i);
+  }
+  std::vector<std::int32_t> got;
+  for (int q = 0; q < 400; ++q) {
+    const Pose2 query{5 * uniform01(rng), 4 * uniform01(rng),
+                      (q % 2) ? 3.1 + 0.04 * uniform01(rng) : -3.14 + 6.28 * uniform01(rng)};
+    const std::size_t k = 1 + q % 12;
+    std::vector<std::pair<double, int>> all;
+    for (int i = 0; i < static_cast<int>(poses.size()); ++i)
+      all.emplace_back(tree.distance(query, poses[i]), i);
+    std::sort(all.begin(), all.end());
+    tree.nearest(query, k, got);
+    ASSERT_EQ(got.size(), k);
+    for (std::size_t j = 0; j < k; ++j) EXPECT_EQ(got[j], 1000 + all[j].second) << q << " " << j;
+  }
+}
+// Removals prune whole subtrees once none of their poses is live: answers
+// must still equal a linear scan over the live poses, through thousands of
+// interleaved inserts, removals (some repeated, some of unknown ids) and
+// queries, down to a tree with no live pose at all.
+TEST(PoseNearest, RemovalsMatchLinearScanOverLivePoses) {
+  std::mt19937_64 rng(11);
+  PoseNearest tree(0.7);
+  std::vector<Pose2> poses;
+  std::vector<bool> live;
+  std::vector<std::int32_t> got;
+  int checked = 0;
+  for (int step = 0; step < 12000; ++step) {
+    const double u = uniform01(rng);
+    if (step < 6000 && u < 0.5) {
+      poses.push_back(
+          {4 * uniform01(rng), 4 * uniform01(rng), std::numbers::pi * (2 * uniform01(rng) - 1)});
+      live.push_back(true);
+      tree.insert(poses.back(), static_cast<std::int32_t>(poses.size() - 1));
+    } else if (u < 0.8 && !poses.empty()) {
+      // Remove the live pose nearest a random point (clusters of removals,
+      // like the planner's goal attempts), or an id again, or an unknown id.
+      const Pose2 at{4 * uniform01(rng), 4 * uniform01(rng), 0.0};
+      int pick = -1;
+      double best = 1e300;
+      for (std::size_t i = 0; i < poses.size(); ++i)
+        if (live[i] && tree.distance(at, poses[i]) < best)
+          best = tree.distance(at, poses[i]), pick = static_cast<int>(i);
+      if (pick >= 0) {
+        tree.remove(pick);
+        live[pick] = false;
+        tree.remove(pick);  // removing twice changes nothing
+      }
+      tree.remove(static_cast<std::int32_t>(poses.size() + 5));
+    } else {
+      const Pose2 query{4 * uniform01(rng), 4 * uniform01(rng),
+                        std::numbers::pi * (2 * uniform01(rng) - 1)};
+      const std::size_t k = 1 + step % 10;
+      std::vector<std::pair<double, int>> all;
+      for (std::size_t i = 0; i < poses.size(); ++i)
+        if (live[i]) all.emplace_back(tree.distance(query, poses[i]), static_cast<int>(i));
+      std::sort(all.begin(), all.end());
+      tree.nearest(query, k, got);
+      ASSERT_EQ(got.size(), std::min(k, all.size())) << step;
+      for (std::size_t j = 0; j < got.size(); ++j) ASSERT_EQ(got[j], all[j].second) << step;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 2000);
+  EXPECT_EQ(std::count(live.begin(), live.end(), true), 0);  // drained to empty
+}
+TEST(PoseNearest, DistanceWrapsHeading) {
+  PoseNearest n(0.5);
+  EXPECT_NEAR(n.distance({0, 0, 3.1}, {0, 0, -3.1}), 0.5 * (2 * std::numbers::pi - 6.2), 1e-12);
+  EXPECT_NEAR(n.distance({0, 0, 0}, {3, 4, 0}), 5.0, 1e-12);
+}
+TEST(PathOps, SubpathPiecesConcatenateToThePath) {
+  rs::Path p{
+      {{rs::Steer::kLeft, 1, 0.7}, {rs::Steer::kStraight, -1, 1.2}, {rs::Steer::kRight, 1, 0.4}},
+      0.7};
+  rs::Path joined{{}, 0.7};
+  for (double s = 0; s < p.length(); s += 0.33)
+    for (const auto& seg : subpath(p, s, std::min(s + 0.33, p.length())).segments)
+      append_segment(joined.segments, seg);
+  ASSERT_EQ(joined.segments.size(), p.segments.size());
+  for (std::size_t i = 0; i < p.segments.size(); ++i) {
+    EXPECT_EQ(joined.segments[i].steer, p.segments[i].steer);
+    EXPECT_EQ(joined.segments[i].gear, p.segments[i].gear);
+    EXPECT_NEAR(joined.segments[i].length, p.segments[i].length, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace hrs::planning
