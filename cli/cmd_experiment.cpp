@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <iostream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cli/args.h"
@@ -15,6 +17,7 @@
 #include "experiments/runner.h"
 #include "experiments/study.h"
 #include "geometry/error.h"
+#include "geometry/scene.h"
 
 namespace hrs::cli {
 
@@ -93,28 +96,10 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
   return out;
 }
 
-}  // namespace
-
-int cmd_experiment(const Argv& argv) {
-  const Args args(argv,
-                  {"out", "seeds", "iterations", "threads", "jobs", "shard", "rooms", "scenes"},
-                  {"quick"});
-  if (args.help()) {
-    std::cout << "usage: " << usage_text();
-    return 0;
-  }
-  if (!args.positional().empty() && args.positional()[0] == "list") {
-    for (const auto& st : experiments::studies())
-      std::cout << st.name << "\t" << st.description << "\n";
-    return 0;
-  }
-  const bool merge = !args.positional().empty() && args.positional()[0] == "merge";
-  if (args.positional().size() < (merge ? 3u : 1u) || (!merge && args.positional().size() != 1))
-    throw InputError(merge ? "usage: hrspace experiment merge STUDY|all --out DIR SHARD_DIR..."
-                           : "usage: hrspace experiment STUDY|all --out DIR [options] (see --help)");
+//! The study configuration the options describe (--out required).
+experiments::StudyConfig study_config(const Args& args) {
   const auto out = args.get("out");
   if (!out || out->empty()) throw InputError("--out DIR is required (see --help)");
-
   experiments::StudyConfig config;
   config.quick = args.flag("quick");
   config.seeds = static_cast<int>(args.integer("seeds", config.quick ? 2 : 10, 1, 10000));
@@ -134,48 +119,59 @@ int cmd_experiment(const Argv& argv) {
                                           : config.scenes_dir / (room + ".json");
       if (!std::filesystem::is_regular_file(p))
         throw InputError("--rooms: '" + room + "': no scene file " + p.string());
+      // A broken scene is one message now, not one failed run per seed later.
+      geometry::require_sequences(geometry::load_scene(p.string()), p.string());
     }
   }
+  return config;
+}
 
-  if (merge) {
-    std::vector<std::filesystem::path> shards;
-    for (std::size_t i = 2; i < args.positional().size(); ++i) {
-      if (!std::filesystem::is_directory(args.positional()[i]))
-        throw InputError(args.positional()[i] + ": not a directory");
-      shards.emplace_back(args.positional()[i]);
-    }
-    int missing = 0;
-    for (const experiments::Study* s : select(args.positional()[1])) {
-      const int m = experiments::merge_shards(*s, config, shards);
-      std::cout << s->name << ": merged " << shards.size() << " shard(s) into "
-                << (config.out / s->name).string() << (m ? ", " + std::to_string(m) + " runs missing" : "")
-                << "\n";
-      missing += m;
-    }
-    std::cout.flush();
-    if (!std::cout) throw std::runtime_error("write error on standard output");
-    if (missing) {
-      std::cerr << "hrspace experiment merge: " << missing
-                << " run(s) have no stored result in any shard\n";
-      return 1;
-    }
-    return 0;
+//! --shard i/n as (i, n); (1, 1) without the option.
+std::pair<int, int> shard_option(const Args& args) {
+  const auto shard = args.get("shard");
+  if (!shard) return {1, 1};
+  const auto slash = shard->find('/');
+  const std::vector<double> n =
+      slash == std::string::npos
+          ? std::vector<double>{}
+          : parse_numbers(shard->substr(0, slash) + "," + shard->substr(slash + 1), 2, "--shard");
+  if (n.size() != 2 || n[0] != std::floor(n[0]) || n[1] != std::floor(n[1]) || n[1] < 1 ||
+      n[0] < 1 || n[0] > n[1] || n[1] > 100000)
+    throw InputError("--shard '" + *shard + "': expected i/n with 1 <= i <= n");
+  return {static_cast<int>(n[0]), static_cast<int>(n[1])};
+}
+
+//! `experiment merge STUDY|all --out DIR SHARD_DIR...`.
+int merge_command(const Args& args, const experiments::StudyConfig& config) {
+  std::vector<std::filesystem::path> shards;
+  for (std::size_t i = 2; i < args.positional().size(); ++i) {
+    if (!std::filesystem::is_directory(args.positional()[i]))
+      throw InputError(args.positional()[i] + ": not a directory");
+    shards.emplace_back(args.positional()[i]);
   }
+  int missing = 0;
+  for (const experiments::Study* s : select(args.positional()[1])) {
+    const int m = experiments::merge_shards(*s, config, shards);
+    std::cout << s->name << ": merged " << shards.size() << " shard(s) into "
+              << (config.out / s->name).string()
+              << (m ? ", " + std::to_string(m) + " runs missing" : "") << "\n";
+    missing += m;
+  }
+  std::cout.flush();
+  if (!std::cout) throw std::runtime_error("write error on standard output");
+  if (missing) {
+    std::cerr << "hrspace experiment merge: " << missing
+              << " run(s) have no stored result in any shard\n";
+    return 1;
+  }
+  return 0;
+}
 
+//! Runs the chosen studies; SIGINT, SIGTERM and SIGHUP stop them cleanly.
+int run_command(const Args& args, const experiments::StudyConfig& config) {
   experiments::RunnerOptions options;
   options.jobs = static_cast<int>(args.integer("jobs", 1, 1, 256));
-  if (const auto shard = args.get("shard")) {
-    const auto slash = shard->find('/');
-    const std::vector<double> n =
-        slash == std::string::npos
-            ? std::vector<double>{}
-            : parse_numbers(shard->substr(0, slash) + "," + shard->substr(slash + 1), 2, "--shard");
-    if (n.size() != 2 || n[0] != std::floor(n[0]) || n[1] != std::floor(n[1]) || n[1] < 1 ||
-        n[0] < 1 || n[0] > n[1] || n[1] > 100000)
-      throw InputError("--shard '" + *shard + "': expected i/n with 1 <= i <= n");
-    options.shard_index = static_cast<int>(n[0]);
-    options.shard_count = static_cast<int>(n[1]);
-  }
+  std::tie(options.shard_index, options.shard_count) = shard_option(args);
   options.progress = isatty(STDERR_FILENO) != 0;
   options.stop = &g_stop;
   const std::vector<const experiments::Study*> chosen = select(args.positional()[0]);
@@ -190,7 +186,8 @@ int cmd_experiment(const Argv& argv) {
   for (const experiments::Study* s : chosen) {
     if (g_stop.load()) break;
     const experiments::RunnerReport r = experiments::run_study(*s, config, options);
-    for (const auto& e : r.errors) std::cerr << "hrspace experiment: " << s->name << ": " << e << "\n";
+    for (const auto& e : r.errors)
+      std::cerr << "hrspace experiment: " << s->name << ": " << e << "\n";
     std::cout << s->name << ": " << r.done << " run, " << r.skipped << " already stored, "
               << r.failed << " failed";
     if (options.shard_count > 1)
@@ -204,6 +201,33 @@ int cmd_experiment(const Argv& argv) {
   if (!std::cout) throw std::runtime_error("write error on standard output");
   if (g_stop.load()) return 128 + (g_signal.load() ? g_signal.load() : SIGINT);
   return failed ? 1 : 0;
+}
+
+}  // namespace
+
+int cmd_experiment(const Argv& argv) {
+  const Args args(argv,
+                  {"out", "seeds", "iterations", "threads", "jobs", "shard", "rooms", "scenes"},
+                  {"quick"});
+  if (args.help()) {
+    std::cout << "usage: " << usage_text();
+    return 0;
+  }
+  const auto& pos = args.positional();
+  if (!pos.empty() && pos[0] == "list") {
+    for (const auto& st : experiments::studies())
+      std::cout << st.name << "\t" << st.description << "\n";
+    std::cout.flush();
+    if (!std::cout) throw std::runtime_error("write error on standard output");
+    return 0;
+  }
+  const bool merge = !pos.empty() && pos[0] == "merge";
+  if (pos.size() < (merge ? 3u : 1u) || (!merge && pos.size() != 1))
+    throw InputError(merge
+                         ? "usage: hrspace experiment merge STUDY|all --out DIR SHARD_DIR..."
+                         : "usage: hrspace experiment STUDY|all --out DIR [options] (see --help)");
+  const experiments::StudyConfig config = study_config(args);
+  return merge ? merge_command(args, config) : run_command(args, config);
 }
 
 }  // namespace hrs::cli

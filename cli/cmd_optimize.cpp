@@ -7,14 +7,15 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
+#include <cctype>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <cctype>
-#include <iterator>
+#include <functional>
 #include <iostream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -144,11 +145,58 @@ std::string format_eta(double seconds) {
   return buf;
 }
 
+//! --weights L,R,C[,D,A]: overrides the scene's path (and interior) weights.
+void apply_weights(const Args& args, geometry::Scene& scene) {
+  const auto w = args.get("weights");
+  if (!w) return;
+  const bool five = std::count(w->begin(), w->end(), ',') == 4;
+  const std::vector<double> v = parse_numbers(*w, five ? 5 : 3, "--weights");
+  for (double x : v)
+    if (!std::isfinite(x) || x < 0.0 || x > 1e6)
+      throw InputError("--weights '" + *w + "': each weight must be finite, >= 0 and <= 1e6");
+  scene.weights.path = {v[0], v[1], v[2]};
+  if (five) scene.weights.interior = {v[3], v[4]};
+}
+
+//! A progress bar with the best cost and ETA on stderr (terminal only).
+std::function<void(const optimize::DesignStep&)> progress_bar(bool tty, long iterations,
+                                                              const std::string& prefix) {
+  if (!tty) return {};
+  const auto t0 = std::chrono::steady_clock::now();
+  return [=](const optimize::DesignStep& step) {
+    const int done = step.anneal.iteration + 1;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double eta = done > 0 ? elapsed / done * (iterations - done) : 0.0;
+    constexpr int kWidth = 30;
+    const int filled = iterations > 0 ? static_cast<int>(kWidth * done / iterations) : kWidth;
+    std::string bar(filled, '#');
+    bar.resize(kWidth, '.');
+    char line[200];
+    std::snprintf(line, sizeof line, "\r%s[%s] %d/%ld  best %.3f  ETA %s ", prefix.c_str(),
+                  bar.c_str(), done, iterations, step.anneal.best_cost, format_eta(eta).c_str());
+    std::cerr << line << std::flush;
+  };
+}
+
+//! One line per design on stdout.
+void print_summary(const std::filesystem::path& dir, const optimize::DesignResult& result) {
+  std::printf(
+      "%s: cost %.4f -> %.4f, tours found %d/%d, acceptance %.2f, %.1f s (planning %.0f%%)%s%s\n",
+      dir.string().c_str(), result.initial.total(), result.final.total(), result.final.tours_found,
+      result.final.tours_total,
+      result.proposals ? static_cast<double>(result.accepted) / result.proposals : 0.0,
+      result.time_total_s,
+      result.time_total_s > 0 ? 100.0 * result.time_planning_s / result.time_total_s : 0.0,
+      result.valid ? "" : "  WARNING: no valid layout found",
+      result.stopped ? "  (interrupted)" : "");
+}
+
 }  // namespace
 
 int cmd_design(const Argv& argv) {
-  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
-                         "weights"});
+  const Args args(
+      argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse", "weights"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsage;
     return 0;
@@ -169,23 +217,16 @@ int cmd_design(const Argv& argv) {
   geometry::require_sequences(scene, path == "-" ? "stdin" : path);
   // The output directory before any work: an unwritable --out loses nothing.
   optimize::require_writable_directory(*out);
-  remove_stale_outputs(*out, designs > 1, designs, true);  // refuses foreign files now, not at the end
-  if (const auto w = args.get("weights")) {
-    const bool five = std::count(w->begin(), w->end(), ',') == 4;
-    const std::vector<double> v = parse_numbers(*w, five ? 5 : 3, "--weights");
-    for (double x : v)
-      if (!std::isfinite(x) || x < 0.0 || x > 1e6)
-        throw InputError("--weights '" + *w + "': each weight must be finite, >= 0 and <= 1e6");
-    scene.weights.path = {v[0], v[1], v[2]};
-    if (five) scene.weights.interior = {v[3], v[4]};
-  }
+  remove_stale_outputs(*out, designs > 1, designs,
+                       true);  // refuses foreign files now, not at the end
+  apply_weights(args, scene);
 
   g_interrupted.store(false);
   g_signal.store(0);
   struct sigaction action {};
   action.sa_handler = on_design_stop_signal;
   sigemptyset(&action.sa_mask);
-  struct sigaction previous[std::size(kStopSignals)] {};
+  struct sigaction previous[std::size(kStopSignals)]{};
   for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
     sigaction(kStopSignals[i], &action, &previous[i]);
 
@@ -199,23 +240,8 @@ int cmd_design(const Argv& argv) {
     options.threads = static_cast<int>(threads);
     options.proposed = reuse.has_value();
     if (reuse) options.reuse = *reuse;
-    const auto t0 = std::chrono::steady_clock::now();
-    auto progress = [&](const optimize::DesignStep& step) {
-      if (!tty) return;
-      const int done = step.anneal.iteration + 1;
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      const double eta = done > 0 ? elapsed / done * (iterations - done) : 0.0;
-      constexpr int kWidth = 30;
-      const int filled = iterations > 0 ? static_cast<int>(kWidth * done / iterations) : kWidth;
-      std::string bar(filled, '#');
-      bar.resize(kWidth, '.');
-      char line[200];
-      std::snprintf(line, sizeof line, "\r%s[%s] %d/%ld  best %.3f  ETA %s ",
-                    designs > 1 ? ("design " + std::to_string(d + 1) + " ").c_str() : "",
-                    bar.c_str(), done, iterations, step.anneal.best_cost, format_eta(eta).c_str());
-      std::cerr << line << std::flush;
-    };
+    const auto progress = progress_bar(
+        tty, iterations, designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
     const optimize::DesignResult result =
         optimize::design(scene, options, &g_interrupted, progress);
     if (tty) std::cerr << "\r\033[K" << std::flush;
@@ -226,15 +252,7 @@ int cmd_design(const Argv& argv) {
     optimize::write_design(result, info, dir);
     svgs.push_back(
         optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
-    std::printf(
-        "%s: cost %.4f -> %.4f, tours found %d/%d, acceptance %.2f, %.1f s (planning %.0f%%)%s%s\n",
-        dir.string().c_str(), result.initial.total(), result.final.total(),
-        result.final.tours_found, result.final.tours_total,
-        result.proposals ? static_cast<double>(result.accepted) / result.proposals : 0.0,
-        result.time_total_s,
-        result.time_total_s > 0 ? 100.0 * result.time_planning_s / result.time_total_s : 0.0,
-        result.valid ? "" : "  WARNING: no valid layout found",
-        result.stopped ? "  (interrupted)" : "");
+    print_summary(dir, result);
     interrupted = result.stopped || g_interrupted.load();
   }
   if (designs > 1) {

@@ -126,8 +126,8 @@ Row environment_cells(int threads) {
   static const std::string commit = [] {
     if (const char* c = std::getenv("HRSPACE_COMMIT"); c && *c) return std::string(c);
 #ifdef HRSPACE_SOURCE_DIR
-    const std::string c = first_line_of_command(
-        "git -C '" HRSPACE_SOURCE_DIR "' rev-parse --short=12 HEAD 2>/dev/null");
+    const std::string c = first_line_of_command("git -C '" HRSPACE_SOURCE_DIR
+                                                "' rev-parse --short=12 HEAD 2>/dev/null");
     if (!c.empty()) {
       const std::string dirty = first_line_of_command(
           "git -C '" HRSPACE_SOURCE_DIR "' status --porcelain --untracked-files=no 2>/dev/null");
@@ -211,16 +211,55 @@ void store_run(const fs::path& study_dir, const RunSpec& spec, const RunOutput& 
 
 }  // namespace
 
-RunnerReport run_study(const Study& study, const StudyConfig& config,
-                       const RunnerOptions& options) {
-  const fs::path study_dir = config.out / study.name;
+namespace {
+
+//! A progress bar with elapsed time and ETA on stderr (a terminal only).
+class ProgressBar {
+ public:
+  ProgressBar(bool on, std::string name, int total)
+      : on_(on), name_(std::move(name)), total_(total), t0_(std::chrono::steady_clock::now()) {}
+  void show(int finished, const std::string& last) const {
+    if (!on_) return;
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    const double eta = finished > 0 ? elapsed / finished * (total_ - finished) : 0.0;
+    constexpr int kWidth = 30;
+    const int filled = total_ > 0 ? kWidth * finished / total_ : kWidth;
+    std::string bar(filled, '#');
+    bar.resize(kWidth, '.');
+    char line[256];
+    std::snprintf(line, sizeof line, "\r\033[K%s [%s] %d/%d  %s  ETA %s  %s", name_.c_str(),
+                  bar.c_str(), finished, total_, format_clock(elapsed).c_str(),
+                  finished > 0 ? format_clock(eta).c_str() : "?", last.c_str());
+    std::cerr << line << std::flush;
+  }
+  void clear() const {
+    if (on_) std::cerr << "\r\033[K" << std::flush;
+  }
+
+ private:
+  bool on_;
+  std::string name_;
+  int total_;
+  std::chrono::steady_clock::time_point t0_;
+};
+
+//! Creates the study's directories and fails now, not after hours of work,
+//! when they are not writable.
+void prepare_study_dir(const fs::path& study_dir) {
   std::error_code ec;
   fs::create_directories(study_dir / "runs", ec);
   if (ec) throw InputError(study_dir.string() + ": cannot create directory: " + ec.message());
-  // Fail now, not after hours of work, when the directory is not writable.
   write_text_atomic(study_dir / ".writable", "");
   fs::remove(study_dir / ".writable", ec);
+}
 
+}  // namespace
+
+RunnerReport run_study(const Study& study, const StudyConfig& config,
+                       const RunnerOptions& options) {
+  const fs::path study_dir = config.out / study.name;
+  prepare_study_dir(study_dir);
   const std::vector<RunSpec> all = study.runs(config);
   const std::vector<RunSpec> mine = select_shard(all, options.shard_index, options.shard_count);
   RunnerReport report;
@@ -237,25 +276,10 @@ RunnerReport run_study(const Study& study, const StudyConfig& config,
   Recordings recordings(config.out / "recordings");
   std::atomic<std::size_t> next{0};
   std::mutex report_mutex;
-  const auto t0 = std::chrono::steady_clock::now();
-  auto show_progress = [&](const std::string& last) {
-    if (!options.progress) return;
-    const int finished = report.done + report.failed;
-    const int n = static_cast<int>(todo.size());
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double eta = finished > 0 ? elapsed / finished * (n - finished) : 0.0;
-    constexpr int kWidth = 30;
-    const int filled = n > 0 ? kWidth * finished / n : kWidth;
-    std::string bar(filled, '#');
-    bar.resize(kWidth, '.');
-    char line[256];
-    std::snprintf(line, sizeof line, "\r\033[K%s [%s] %d/%d  %s  ETA %s  %s", study.name.c_str(),
-                  bar.c_str(), finished, n, format_clock(elapsed).c_str(),
-                  finished > 0 ? format_clock(eta).c_str() : "?", last.c_str());
-    std::cerr << line << std::flush;
-  };
-  show_progress("");
+  const ProgressBar progress(options.progress, study.name, static_cast<int>(todo.size()));
+  progress.show(0, "");
+  // Each worker takes the next run not started; a stop request ends the
+  // workers after their current run, whose result is dropped when stopped.
   auto worker = [&] {
     for (;;) {
       if (options.stop && options.stop->load()) return;
@@ -273,12 +297,12 @@ RunnerReport run_study(const Study& study, const StudyConfig& config,
         store_run(study_dir, spec, out, config, study.name);
         std::lock_guard lock(report_mutex);
         ++report.done;
-        show_progress(spec.key);
+        progress.show(report.done + report.failed, spec.key);
       } catch (const std::exception& e) {
         std::lock_guard lock(report_mutex);
         ++report.failed;
         report.errors.push_back(spec.key + ": " + e.what());
-        show_progress(spec.key + " FAILED");
+        progress.show(report.done + report.failed, spec.key + " FAILED");
       }
     }
   };
@@ -287,7 +311,7 @@ RunnerReport run_study(const Study& study, const StudyConfig& config,
   for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
   worker();
   for (auto& t : pool) t.join();
-  if (options.progress) std::cerr << "\r\033[K" << std::flush;
+  progress.clear();
   if (options.stop && options.stop->load()) report.stopped = true;
   report.missing = write_tables(study, config);
   return report;

@@ -44,7 +44,8 @@ constexpr PlannerSpec kPlanners[] = {
     {"paper", "samples,steering,paths,trees", false, "proposed, the paper's techniques (§V)"},
     {"all", "all", false, "proposed, every technique"},
     {"samples_steering", "samples,steering", false, "proposed, the RS-decomposition only (§V-A)"},
-    {"none", "none", false, "proposed with every technique off (= baseline, counts RRT iterations)"},
+    {"none", "none", false,
+     "proposed with every technique off (= baseline, counts RRT iterations)"},
 };
 
 const PlannerSpec& planner_spec(const std::string& name) {
@@ -127,9 +128,8 @@ Row design_measures(const optimize::DesignResult& r) {
 }
 
 //! Keeps a design's four files under the study's designs/KEY/.
-void keep_design(const RunContext& context, const std::string& key,
-                 const optimize::DesignResult& r, const optimize::DesignOptions& o,
-                 const std::string& planner) {
+void keep_design(const RunContext& context, const std::string& key, const optimize::DesignResult& r,
+                 const optimize::DesignOptions& o, const std::string& planner) {
   optimize::RunInfo info{o.seed, planner, o.iterations};
   optimize::write_design(r, info, context.study_dir / "designs" / key);
 }
@@ -142,7 +142,8 @@ RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep =
   const std::string mode = param(spec, "mode");
   const auto seed = static_cast<std::uint64_t>(int_param(spec, "seed"));
   geometry::Scene scene = load_room(context.config, room);
-  if (const auto w = spec.params.get("path_weights"); w && *w == "0") scene.weights.path = {0, 0, 0};
+  if (const auto w = spec.params.get("path_weights"); w && *w == "0")
+    scene.weights.path = {0, 0, 0};
   optimize::DesignOptions o = design_options(context.config, planner, seed);
   RunOutput out;
   const std::string label = room_label(room);
@@ -177,8 +178,9 @@ RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep =
   out.measures.set("planning_s", r.planning_s);
   out.measures.set("setup_s", r.setup_s);
   out.measures.set("layouts", r.layouts);
-  out.measures.set("tours_found_pct",
-                   r.tours_total ? 100.0 * static_cast<double>(r.tours_found) / r.tours_total : 0.0);
+  out.measures.set(
+      "tours_found_pct",
+      r.tours_total ? 100.0 * static_cast<double>(r.tours_found) / r.tours_total : 0.0);
   out.measures.set("mean_tour_m", r.tours_found ? r.tour_length / r.tours_found : std::nan(""));
   out.measures.set("tours_invalidated", r.tours_invalidated);
   return out;
@@ -220,10 +222,8 @@ std::vector<RunSpec> timing_runs(const StudyConfig& c) {
     for (const auto& room : rooms_of(c, {"bedroom", "office", "living_room"}))
       for (const auto& seed : seed_list(c))
         for (const char* planner : {"baseline", "literal", "paper", "all"})
-          runs.push_back(make_run("timing", {{"mode", mode},
-                                             {"room", room},
-                                             {"seed", seed},
-                                             {"planner", planner}}));
+          runs.push_back(make_run(
+              "timing", {{"mode", mode}, {"room", room}, {"seed", seed}, {"planner", planner}}));
   return runs;
 }
 
@@ -388,10 +388,9 @@ std::vector<RunSpec> small_runs(const StudyConfig& c) {
   for (const auto& room : rooms)
     for (const auto& seed : seed_list(c))
       for (const char* planner : {"baseline", "all"})
-        runs.push_back(make_run("small_room", {{"mode", "design"},
-                                               {"room", room},
-                                               {"seed", seed},
-                                               {"planner", planner}}));
+        runs.push_back(
+            make_run("small_room",
+                     {{"mode", "design"}, {"room", room}, {"seed", seed}, {"planner", planner}}));
   return runs;
 }
 
@@ -414,8 +413,7 @@ std::vector<RunSpec> ao_runs(const StudyConfig& c) {
       c.rooms.empty() ? std::vector<std::string>{"office", "office_round_table"} : c.rooms;
   for (const auto& room : rooms)
     for (const auto& seed : seed_list(c))
-      runs.push_back(
-          make_run("ao_graph", {{"room", room}, {"seed", seed}, {"planner", "all"}}));
+      runs.push_back(make_run("ao_graph", {{"room", room}, {"seed", seed}, {"planner", "all"}}));
   return runs;
 }
 
@@ -531,6 +529,42 @@ std::vector<RunSpec> method_runs(const StudyConfig& c) {
   return {make_run("method", {{"room", room}, {"seed", "1"}})};
 }
 
+//! Rows x, y, theta, slot of the goal poses of object `id`.
+void add_goal_rows(Table& goals, const planning::TourPlanner& planner, const std::string& id) {
+  for (const auto& g : planner.goals_for(id)) {
+    Row row;
+    row.set("object", id);
+    row.set("x", g.pose.x);
+    row.set("y", g.pose.y);
+    row.set("theta", g.pose.theta);
+    row.set("slot", g.slot);
+    goals.push_back(std::move(row));
+  }
+}
+
+//! The edges of the AO graph of each room (Fig. "actiongraph"): the
+//! paper's rooms, or --rooms.
+Table ao_edges(const StudyConfig& config) {
+  Table edges;
+  const std::vector<std::string> graphs =
+      config.rooms.empty()
+          ? std::vector<std::string>{"bedroom", "office", "office_round_table", "living_room"}
+          : config.rooms;
+  for (const auto& name : graphs) {
+    const geometry::Scene s = load_room(config, name);
+    for (const auto& [from, row] : s.activity.transitions)
+      for (const auto& [to, p] : row) {
+        Row e;
+        e.set("graph", room_label(name));
+        e.set("from", from);
+        e.set("to", to);
+        e.set("p", p);
+        edges.push_back(std::move(e));
+      }
+  }
+  return edges;
+}
+
 RunOutput method_run(const RunSpec& spec, RunContext& context) {
   // A designed layout (proposed planner, this seed): the initial layouts of
   // the shipped rooms block some legs, a design shows the method at work.
@@ -546,20 +580,14 @@ RunOutput method_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene& scene = designed.layout;
   const geometry::CSpace cspace(scene);
   planning::TourPlanner planner(scene, cspace, {}, seed);
-  // Goal poses around the first object (the bed in the paper's Fig. "goal").
+  // Goal poses around the first two objects (the bed and the TV in the
+  // paper's Fig. "goal") and the leg between them, from the tour door →
+  // first → second.
   const std::string first = scene.objects.front().id;
-  Table goals;
-  for (const auto& g : planner.goals_for(first)) {
-    Row row;
-    row.set("object", first);
-    row.set("x", g.pose.x);
-    row.set("y", g.pose.y);
-    row.set("theta", g.pose.theta);
-    row.set("slot", g.slot);
-    goals.push_back(std::move(row));
-  }
-  // One leg from the first object to the second: the tour door → first → second.
   const std::string second = scene.objects.size() > 1 ? scene.objects[1].id : first;
+  Table goals;
+  add_goal_rows(goals, planner, first);
+  add_goal_rows(goals, planner, second);
   const planning::Tour tour = planner.plan({std::string(planning::kDoorId), first, second});
   Table leg;
   if (tour.found && tour.legs.size() == 2) {
@@ -573,42 +601,13 @@ RunOutput method_run(const RunSpec& spec, RunContext& context) {
       leg.push_back(std::move(row));
     }
   }
-  for (const auto& id : {second}) {
-    for (const auto& g : planner.goals_for(id)) {
-      Row row;
-      row.set("object", id);
-      row.set("x", g.pose.x);
-      row.set("y", g.pose.y);
-      row.set("theta", g.pose.theta);
-      row.set("slot", g.slot);
-      goals.push_back(std::move(row));
-    }
-  }
   out.measures.set("goal_object", first);
   out.measures.set("leg_to", second);
   out.measures.set("leg_found", tour.found ? 1L : 0L);
   out.measures.set("leg_length_m", tour.found ? tour.legs[1].metrics.length : std::nan(""));
   out.tables.emplace_back("goals", std::move(goals));
   out.tables.emplace_back("leg", std::move(leg));
-  // The AO graph of each room (Fig. "actiongraph"): the paper's rooms, or --rooms.
-  Table edges;
-  const std::vector<std::string> graphs =
-      context.config.rooms.empty()
-          ? std::vector<std::string>{"bedroom", "office", "office_round_table", "living_room"}
-          : context.config.rooms;
-  for (const auto& name : graphs) {
-    const geometry::Scene s = load_room(context.config, name);
-    for (const auto& [from, row] : s.activity.transitions)
-      for (const auto& [to, p] : row) {
-        Row e;
-        e.set("graph", room_label(name));
-        e.set("from", from);
-        e.set("to", to);
-        e.set("p", p);
-        edges.push_back(std::move(e));
-      }
-  }
-  out.tables.emplace_back("ao_edges", std::move(edges));
+  out.tables.emplace_back("ao_edges", ao_edges(context.config));
   // The layout, for drawing the goal figure.
   const fs::path dir = context.study_dir / "designs" / spec.key;
   fs::create_directories(dir);
@@ -627,9 +626,8 @@ const std::vector<Study>& studies() {
       {"timing",
        "Fig. \"time\", the abstract's minutes, the 96.06 % planning share, the 65-70 % reduction "
        "(§VI-A)",
-       "baseline vs proposed planners: whole designs and replays of identical layouts",
-       timing_runs, [](const RunSpec& s, RunContext& c) { return design_or_replay(s, c); },
-       timing_summary},
+       "baseline vs proposed planners: whole designs and replays of identical layouts", timing_runs,
+       [](const RunSpec& s, RunContext& c) { return design_or_replay(s, c); }, timing_summary},
       {"rs_decomposition", "§V-A's -40 %, Fig. \"partition\", the 48 regions",
        "RS-decomposition: regions and word accuracy; samples+steering vs baseline on replays",
        rsd_runs, rsd_run, rsd_summary},
@@ -639,8 +637,8 @@ const std::vector<Study>& studies() {
       {"small_room", "§VI-B (+30 % planning time) and Fig. \"small\"",
        "bedroom vs small bedroom, baseline and proposed", small_runs, small_run, small_summary},
       {"ao_graph", "§VI-C and Fig. \"actionoffice\"",
-       "office vs office_round_table: does the heavier table sit nearer the door?", ao_runs,
-       ao_run, ao_summary},
+       "office vs office_round_table: does the heavier table sit nearer the door?", ao_runs, ao_run,
+       ao_summary},
       {"designs", "Fig. \"cover3\" and Fig. 1", "designs per room; path weights 0 vs the scene's",
        designs_runs, designs_run, designs_summary},
       {"method", "Fig. \"actiongraph\" and Fig. \"goal\"",

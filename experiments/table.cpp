@@ -100,14 +100,29 @@ std::string to_csv(const Table& rows) {
   return out;
 }
 
-Table parse_csv(const std::string& text, const std::string& label) {
-  std::vector<std::vector<std::string>> records;
-  std::vector<bool> blank;  // the record was an empty line
-  std::vector<std::string> record;
-  bool chars = false;  // the current record has consumed a character
+namespace {
+
+//! One CSV record and whether it was an empty line.
+struct Record {
+  std::vector<std::string> cells;
+  bool blank = false;
+};
+
+//! Splits CSV text into records (RFC 4180 quoting; LF or CRLF line ends).
+std::vector<Record> split_records(const std::string& text, const std::string& label) {
+  std::vector<Record> records;
+  Record record;
   std::string cell;
-  bool quoted = false, in_record = false;
+  bool quoted = false, in_record = false, chars = false;
   long line = 1, record_line = 1;
+  auto end_record = [&] {
+    record.cells.push_back(std::move(cell));
+    cell.clear();
+    record.blank = !chars;
+    records.push_back(std::move(record));
+    record = {};
+    in_record = false;
+  };
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (quoted) {
@@ -131,16 +146,11 @@ Table parse_csv(const std::string& text, const std::string& label) {
     if (c == '"' && cell.empty()) {
       quoted = true;
     } else if (c == ',') {
-      record.push_back(std::move(cell));
+      record.cells.push_back(std::move(cell));
       cell.clear();
     } else if (c == '\n' || c == '\r') {
       if (c == '\r' && i + 1 < text.size() && text[i + 1] == '\n') ++i;
-      record.push_back(std::move(cell));
-      cell.clear();
-      records.push_back(std::move(record));
-      blank.push_back(!chars);
-      record.clear();
-      in_record = false;
+      end_record();
       ++line;
     } else {
       cell += c;
@@ -148,22 +158,26 @@ Table parse_csv(const std::string& text, const std::string& label) {
   }
   if (quoted)
     throw InputError(label + ": line " + std::to_string(record_line) + ": unbalanced quote");
-  if (in_record) {
-    record.push_back(std::move(cell));
-    records.push_back(std::move(record));
-    blank.push_back(!chars);
-  }
+  if (in_record) end_record();
+  return records;
+}
+
+}  // namespace
+
+Table parse_csv(const std::string& text, const std::string& label) {
+  const std::vector<Record> records = split_records(text, label);
   Table rows;
   if (records.empty()) return rows;
-  const std::vector<std::string>& header = records.front();
+  const std::vector<std::string>& header = records.front().cells;
   for (std::size_t k = 1; k < records.size(); ++k) {
-    if (blank[k]) continue;
-    if (records[k].size() != header.size())
+    if (records[k].blank) continue;
+    const auto& cells = records[k].cells;
+    if (cells.size() != header.size())
       throw InputError(label + ": record " + std::to_string(k + 1) + " has " +
-                       std::to_string(records[k].size()) + " cells, the header " +
+                       std::to_string(cells.size()) + " cells, the header " +
                        std::to_string(header.size()));
     Row r;
-    for (std::size_t i = 0; i < header.size(); ++i) r.set(header[i], records[k][i]);
+    for (std::size_t i = 0; i < header.size(); ++i) r.set(header[i], cells[i]);
     rows.push_back(std::move(r));
   }
   return rows;
