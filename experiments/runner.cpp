@@ -50,16 +50,22 @@ Recordings::Layouts layouts_from(const json& j) {
 
 }  // namespace
 
+std::shared_ptr<std::mutex> Recordings::file_lock(const fs::path& file) {
+  std::lock_guard lock(mutex_);
+  auto& slot = busy_[file.string()];
+  if (!slot) slot = std::make_shared<std::mutex>();
+  return slot;
+}
+
+void Recordings::store(const fs::path& file, const Layouts& layouts) {
+  fs::create_directories(dir_);
+  write_text_atomic(file, layouts_json(layouts).dump() + "\n");
+}
+
 Recordings::Layouts Recordings::get(const std::string& room, std::uint64_t seed, int iterations,
                                     const std::function<Layouts()>& record) {
   const fs::path file = path(room, seed, iterations);
-  std::shared_ptr<std::mutex> busy;
-  {
-    std::lock_guard lock(mutex_);
-    auto& slot = busy_[file.string()];
-    if (!slot) slot = std::make_shared<std::mutex>();
-    busy = slot;
-  }
+  const std::shared_ptr<std::mutex> busy = file_lock(file);
   std::lock_guard lock(*busy);  // one job records, the others wait for its file
   if (fs::exists(file)) {
     try {
@@ -69,25 +75,16 @@ Recordings::Layouts Recordings::get(const std::string& room, std::uint64_t seed,
     }
   }
   Layouts layouts = record();
-  fs::create_directories(dir_);
-  write_text_atomic(file, layouts_json(layouts).dump() + "\n");
+  store(file, layouts);
   return layouts;
 }
 
 void Recordings::put(const std::string& room, std::uint64_t seed, int iterations,
                      const Layouts& layouts) {
   const fs::path file = path(room, seed, iterations);
-  std::shared_ptr<std::mutex> busy;
-  {
-    std::lock_guard lock(mutex_);
-    auto& slot = busy_[file.string()];
-    if (!slot) slot = std::make_shared<std::mutex>();
-    busy = slot;
-  }
+  const std::shared_ptr<std::mutex> busy = file_lock(file);
   std::lock_guard lock(*busy);
-  if (fs::exists(file)) return;
-  fs::create_directories(dir_);
-  write_text_atomic(file, layouts_json(layouts).dump() + "\n");
+  if (!fs::exists(file)) store(file, layouts);
 }
 
 // --- environment ------------------------------------------------------------

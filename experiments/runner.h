@@ -43,6 +43,10 @@ class Recordings {
 
  private:
   std::filesystem::path path(const std::string& room, std::uint64_t seed, int iterations) const;
+  //! The lock of one recording file (made on first use).
+  std::shared_ptr<std::mutex> file_lock(const std::filesystem::path& file);
+  //! Writes a recording (atomically); the caller holds its file_lock().
+  void store(const std::filesystem::path& file, const Layouts& layouts);
   std::filesystem::path dir_;
   std::mutex mutex_;
   std::map<std::string, std::shared_ptr<std::mutex>> busy_;
@@ -72,8 +76,7 @@ std::vector<RunSpec> select_shard(const std::vector<RunSpec>& runs, int index, i
 
 //! Runs the study's runs of this shard that are not stored yet, then writes
 //! its tables (write_tables).
-RunnerReport run_study(const Study& study, const StudyConfig& config,
-                       const RunnerOptions& options);
+RunnerReport run_study(const Study& study, const StudyConfig& config, const RunnerOptions& options);
 
 //! Writes runs.csv, summary.csv and the extra tables from the stored runs.
 //! Returns how many runs of the study have no stored result.

@@ -127,6 +127,20 @@ Row design_measures(const optimize::DesignResult& r) {
   return m;
 }
 
+//! The design options of a run: its planner and seed.
+optimize::DesignOptions run_options(const RunSpec& spec, const RunContext& context) {
+  return design_options(context.config, param(spec, "planner"),
+                        static_cast<std::uint64_t>(int_param(spec, "seed")));
+}
+
+//! A finished design's measures; a stopped one is marked stopped (not stored).
+RunOutput design_output(const optimize::DesignResult& r) {
+  RunOutput out;
+  out.stopped = r.stopped;
+  if (!out.stopped) out.measures = design_measures(r);
+  return out;
+}
+
 //! Keeps a design's four files under the study's designs/KEY/.
 void keep_design(const RunContext& context, const std::string& key, const optimize::DesignResult& r,
                  const optimize::DesignOptions& o, const std::string& planner) {
@@ -152,12 +166,9 @@ RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep =
     const bool record = planner == "baseline" && !spec.params.get("path_weights");
     if (record) o.layouts_out = &layouts;
     const optimize::DesignResult r = optimize::design(scene, o, context.stop);
-    if (r.stopped) {
-      out.stopped = true;
-      return out;
-    }
+    out = design_output(r);
+    if (out.stopped) return out;
     if (record) context.recordings->put(label, seed, o.iterations, layouts);
-    out.measures = design_measures(r);
     if (keep) keep_design(context, spec.key, r, o, planner);
     return out;
   }
@@ -344,16 +355,11 @@ std::vector<RunSpec> rrt_runs(const StudyConfig& c) {
 
 RunOutput rrt_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene scene = load_room(context.config, param(spec, "room"));
-  const auto seed = static_cast<std::uint64_t>(int_param(spec, "seed"));
-  optimize::DesignOptions o = design_options(context.config, param(spec, "planner"), seed);
+  optimize::DesignOptions o = run_options(spec, context);
   if (const auto t = spec.params.get("tree_max_nodes")) o.reuse.tree_max_nodes = std::stoi(*t);
   const optimize::DesignResult r = optimize::design(scene, o, context.stop);
-  RunOutput out;
-  if (r.stopped) {
-    out.stopped = true;
-    return out;
-  }
-  out.measures = design_measures(r);
+  RunOutput out = design_output(r);
+  if (out.stopped) return out;
   if (param(spec, "kind") == "histogram") {
     Table h;
     std::uint64_t legs = 0, within = 0;
@@ -440,14 +446,10 @@ double tour_distance(const std::vector<planning::Tour>& tours, const std::string
 RunOutput ao_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene scene = load_room(context.config, param(spec, "room"));
   const auto seed = static_cast<std::uint64_t>(int_param(spec, "seed"));
-  const optimize::DesignOptions o = design_options(context.config, param(spec, "planner"), seed);
+  const optimize::DesignOptions o = run_options(spec, context);
   const optimize::DesignResult r = optimize::design(scene, o, context.stop);
-  RunOutput out;
-  if (r.stopped) {
-    out.stopped = true;
-    return out;
-  }
-  out.measures = design_measures(r);
+  RunOutput out = design_output(r);
+  if (out.stopped) return out;
   const auto alpha = optimize::object_scales(r.sequences);
   const geometry::Pose2 door = geometry::door_start_pose(scene);
   // The two objects the paper compares when present, else the two with the

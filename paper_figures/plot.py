@@ -67,6 +67,27 @@ def rooms_of(rows):
 # --- figures ----------------------------------------------------------------
 
 
+def planner_pair_bars(rows, planners, ylabel, log):
+    """Bars of mean ± sd planning time per room for two planners."""
+    rooms = rooms_of(rows)
+    fig, ax = plt.subplots(figsize=(5.5, 3.2))
+    for k, planner in enumerate(planners):
+        ms, sds = [], []
+        for room in rooms:
+            m, sd, _ = mean_sd([num(r, "planning_s") for r in by(rows, room=room, planner=planner)])
+            ms.append(m)
+            sds.append(sd)
+        ax.bar([i + (k - 0.5) * 0.35 for i in range(len(rooms))], ms, 0.35, yerr=sds, capsize=2,
+               label=PLANNER_LABELS[planner])
+    ax.set_xticks(range(len(rooms)))
+    ax.set_xticklabels(rooms)
+    if log:
+        ax.set_yscale("log")
+    ax.set_ylabel(ylabel)
+    ax.legend(fontsize=7)
+    return fig
+
+
 def fig_timing(root, figs):
     runs = read_csv(os.path.join(root, "timing", "runs.csv"))
     if not runs:
@@ -142,20 +163,8 @@ def fig_rs_decomposition(root, figs):
         out += save(fig, figs, "rs_partition")
     rep = by(runs, kind="replay")
     if rep:
-        rooms = rooms_of(rep)
-        fig, ax = plt.subplots(figsize=(5.5, 3.2))
-        for k, planner in enumerate(["baseline", "samples_steering"]):
-            ms, sds = [], []
-            for room in rooms:
-                m, sd, _ = mean_sd([num(r, "planning_s") for r in by(rep, room=room, planner=planner)])
-                ms.append(m)
-                sds.append(sd)
-            ax.bar([i + (k - 0.5) * 0.35 for i in range(len(rooms))], ms, 0.35, yerr=sds, capsize=2,
-                   label=PLANNER_LABELS[planner])
-        ax.set_xticks(range(len(rooms)))
-        ax.set_xticklabels(rooms)
-        ax.set_ylabel("planning time (s), same layouts")
-        ax.legend(fontsize=7)
+        fig = planner_pair_bars(rep, ["baseline", "samples_steering"],
+                                "planning time (s), same layouts", log=False)
         out += save(fig, figs, "rs_decomposition_time")
     return out
 
@@ -219,21 +228,8 @@ def fig_small_room(root, figs):
     runs = read_csv(os.path.join(root, "small_room", "runs.csv"))
     out = []
     if runs:
-        rooms = rooms_of(runs)
-        fig, ax = plt.subplots(figsize=(5.5, 3.2))
-        for k, planner in enumerate(["baseline", "all"]):
-            ms, sds = [], []
-            for room in rooms:
-                m, sd, _ = mean_sd([num(r, "planning_s") for r in by(runs, room=room, planner=planner)])
-                ms.append(m)
-                sds.append(sd)
-            ax.bar([i + (k - 0.5) * 0.35 for i in range(len(rooms))], ms, 0.35, yerr=sds, capsize=2,
-                   label=PLANNER_LABELS[planner])
-        ax.set_xticks(range(len(rooms)))
-        ax.set_xticklabels(rooms)
-        ax.set_yscale("log")
-        ax.set_ylabel("planning time per design (s)")
-        ax.legend(fontsize=7)
+        fig = planner_pair_bars(runs, ["baseline", "all"], "planning time per design (s)",
+                                log=True)
         out += save(fig, figs, "small_room_time")
     dirs = [d for d in design_dirs(root, "small_room") if "small" in d] or design_dirs(root, "small_room")
     if dirs:
