@@ -93,7 +93,8 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
 
 constexpr const char* kDesignUsage =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
-    "                     [--planner baseline|proposed] [--reuse LIST] [--weights W]\n\n"
+    "                     [--planner baseline|proposed] [--reuse LIST] [--weights W]\n"
+    "                     [--disable LIST]\n\n"
     "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
     "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
     "Writes DIR/layout.json (a scene file), DIR/tours.json, DIR/design.svg, DIR/report.json.\n"
@@ -115,13 +116,14 @@ constexpr const char* kDesignUsage =
     "                    failures  a failed leg is not re-planned while no object moved\n"
     "                              within reach of its RRT's nodes (beyond the paper)\n"
     "                    shortcuts every path stored is shortened first (beyond the paper)\n"
-    "                    budget    fresh plans stop after 300 RRT iterations, not 3000 (budget=N:\n"
-    "                              after N); hard legs fail and the tour tries other poses\n"
-    "                              (beyond the paper)\n"
+    "                    budget    opt-in, not in all: fresh plans stop after 300 RRT iterations,\n"
+    "                              not 3000 (budget=N: after N); hard legs fail and the tour\n"
+    "                              tries other poses (beyond the paper; costs tours)\n"
     "                    metrics   a found leg's clearance metrics and re-certification are\n"
     "                              kept and updated for the objects that moved, not redone\n"
     "                              (beyond the paper; exact)\n"
-    "                    backoff   a leg that keeps failing gets half the RRT budget at each\n"
+    "                    backoff   opt-in, not in all: a leg that keeps failing gets half the\n"
+    "                              RRT budget at each\n"
     "                              failure, down to 120 iterations (backoff=N: down to N); the\n"
     "                              whole budget again once found (beyond the paper)\n"
     "                    speculate a tour waiting for a leg another thread is planning plans\n"
@@ -131,6 +133,13 @@ constexpr const char* kDesignUsage =
     "                              iterations whose ends a certified grid separates fails\n"
     "                              at once (beyond the paper; rarely pays, docs/planner.md)\n"
     "                  e.g. --reuse all,proofs\n"
+    "  --disable LIST  switch off additions of the design loop, for ablations (beyond the\n"
+    "                  paper, all on by default; docs/optimize.md), a comma list of\n"
+    "                    refuse  legs the certified free grid proves impossible are refused\n"
+    "                            before any RRT (the baseline's tours are the same either way)\n"
+    "                    escape  unfound tours are charged by how walled off their stops are\n"
+    "                    early   a proposal stops being planned once a lower bound of its\n"
+    "                            cost is rejected (the same decisions)\n"
     "DIR is created and checked writable before any work. Each file is written to a\n"
     "temporary file and renamed into place once all of a design's files are written.\n"
     "Outputs of an earlier run that this run does not rewrite (numbered design\n"
@@ -192,11 +201,33 @@ void print_summary(const std::filesystem::path& dir, const optimize::DesignResul
       result.stopped ? "  (interrupted)" : "");
 }
 
+//! --disable LIST: switches off additions of the design loop.
+void apply_disable(const std::optional<std::string>& list, optimize::DesignOptions& options) {
+  if (!list) return;
+  std::size_t start = 0;
+  while (start <= list->size()) {
+    const std::size_t comma = std::min(list->find(',', start), list->size());
+    const std::string name = list->substr(start, comma - start);
+    if (name == "refuse") {
+      options.refuse_impossible = false;
+    } else if (name == "escape") {
+      options.escape = false;
+    } else if (name == "early") {
+      options.early_reject = false;
+    } else if (name != "none" || list->find(',') != std::string::npos) {
+      throw InputError("--disable '" + *list + "': unknown item '" + name +
+                       "' (expected none or a comma list of refuse, escape, early)");
+    }
+    start = comma + 1;
+  }
+}
+
 }  // namespace
 
 int cmd_design(const Argv& argv) {
   const Args args(
-      argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse", "weights"});
+      argv,
+      {"out", "seed", "iterations", "designs", "threads", "planner", "reuse", "weights", "disable"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsage;
     return 0;
@@ -204,12 +235,15 @@ int cmd_design(const Argv& argv) {
   args.expect_positional(1, "hrspace design SCENE --out DIR [options] (see --help)");
   const auto out = args.get("out");
   if (!out) throw InputError("--out DIR is required (see --help)");
-  const std::optional<planning::ReuseOptions> reuse = planner_option(args, "all,proofs", "all");
+  const std::optional<planning::ReuseOptions> reuse =
+      planner_option(args, "all,budget,backoff,proofs", "all");
   const std::string planner = reuse ? "proposed" : "baseline";
   const long seed = args.integer("seed", 1, 0, 1L << 53);
   const long iterations = args.integer("iterations", 700, 0, 100000000);
   const long designs = args.integer("designs", 1, 1, 1000);
   const long threads = args.integer("threads", 0, 0, 1024);
+  optimize::DesignOptions base_options;
+  apply_disable(args.get("disable"), base_options);
 
   const std::string path = args.positional()[0];
   geometry::Scene scene =
@@ -234,7 +268,7 @@ int cmd_design(const Argv& argv) {
   std::vector<std::string> svgs;
   bool interrupted = false;
   for (long d = 0; d < designs && !interrupted; ++d) {
-    optimize::DesignOptions options;
+    optimize::DesignOptions options = base_options;
     options.seed = static_cast<std::uint64_t>(seed + d);
     options.iterations = static_cast<int>(iterations);
     options.threads = static_cast<int>(threads);

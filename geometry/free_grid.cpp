@@ -58,6 +58,9 @@ FreeGrid::FreeGrid(const Scene& scene, FreeGridOptions options) : slices_(option
     for (int i = 0; i < 4; ++i) cores_[k][i] = rotate(local[i], theta);
   }
   counts_.assign(static_cast<std::size_t>(nx_) * ny_ * slices_, 0);
+  if (slices_ <= 64)
+    free_mask_.assign(static_cast<std::size_t>(nx_) * ny_,
+                      slices_ == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << slices_) - 1);
 
   // The outside of the room, as convex pieces reaching beyond any core.
   for (const Polygon& wall : complement_pieces(room, reach + 0.1))
@@ -115,7 +118,10 @@ void FreeGrid::rasterize(const Polygon& piece, int k, int delta) {
     const int hi = std::min(nx_ - 1, static_cast<int>(std::floor((xb - xmin_) / hx_ - 0.5)));
     for (int ix = lo; ix <= hi; ++ix) {
       std::uint16_t& c = counts_[index(ix, iy, k)];
+      const bool was_free = c == 0;
       c = static_cast<std::uint16_t>(c + delta);
+      if (!free_mask_.empty() && was_free != (c == 0))
+        free_mask_[static_cast<std::size_t>(iy) * nx_ + ix] ^= std::uint64_t{1} << k;
     }
   }
 }
@@ -183,6 +189,144 @@ ReachabilityQuery::Answer ReachabilityQuery::query(const FreeGrid& grid, const P
         }
       }
     }
+  }
+}
+
+}  // namespace hrs::geometry
+
+namespace hrs::geometry {
+namespace {
+
+//! Column masks of n slices (n <= 64): cyclic shifts, dilation by one
+//! slice and the fill of seeds along runs of free slices.
+struct SliceRing {
+  int n;
+  std::uint64_t full;
+  explicit SliceRing(int slices)
+      : n(slices), full(slices == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << slices) - 1) {}
+  std::uint64_t up(std::uint64_t r) const { return ((r << 1) | (r >> (n - 1))) & full; }
+  std::uint64_t down(std::uint64_t r) const { return ((r >> 1) | (r << (n - 1))) & full; }
+  std::uint64_t dilate(std::uint64_t r) const { return r | up(r) | down(r); }
+  //! Every bit of `free` joined to a bit of `seed & free` through set bits
+  //! of `free`, around the ring: a Kogge–Stone occluded fill each way (the
+  //! chess-bitboard technique), twice, the second pass after carrying the
+  //! wrap-around (bit n−1 ↔ bit 0).
+  std::uint64_t fill(std::uint64_t seed, std::uint64_t free) const {
+    std::uint64_t r = seed & free;
+    for (int pass = 0; pass < 2 && r; ++pass) {
+      std::uint64_t gen = r, pro = free;
+      for (int s = 1; s < 64; s <<= 1) {
+        gen |= pro & (gen << s);
+        pro &= pro << s;
+      }
+      std::uint64_t gen2 = gen;
+      pro = free;
+      for (int s = 1; s < 64; s <<= 1) {
+        gen2 |= pro & (gen2 >> s);
+        pro &= pro >> s;
+      }
+      r = gen2;
+      const std::uint64_t top = std::uint64_t{1} << (n - 1);
+      if ((r & top) && (free & 1)) r |= 1;
+      if ((r & 1) && (free & top)) r |= top;
+    }
+    return r;
+  }
+};
+
+}  // namespace
+
+void ReachableSet::fill(const FreeGrid& grid, const Pose2& start) {
+  if (!grid.has_column_masks())
+    throw std::invalid_argument("ReachableSet: the grid has more than 64 slices");
+  grid_ = &grid;
+  const std::size_t columns = static_cast<std::size_t>(grid.nx()) * grid.ny();
+  reached_.assign(columns, 0);
+  distance_.clear();
+  reached_columns_ = 0;
+  queue_.clear();
+  const SliceRing ring(grid.slices());
+  const std::size_t cell = grid.cell_of(start);
+  const std::size_t c0 = cell / grid.slices();
+  const std::uint64_t seed = std::uint64_t{1} << (cell % grid.slices());
+  if (!(grid.free_slices(c0) & seed)) {
+    distance_.assign(columns, std::numeric_limits<double>::infinity());
+    return;
+  }
+  reached_[c0] = ring.fill(seed, grid.free_slices(c0));
+  queue_.push_back(static_cast<std::uint32_t>(c0));
+  const int nx = grid.nx(), ny = grid.ny();
+  for (std::size_t head = 0; head < queue_.size(); ++head) {
+    const std::size_t c = queue_[head];
+    const int ix = static_cast<int>(c % nx), iy = static_cast<int>(c / nx);
+    const std::uint64_t spread = ring.dilate(reached_[c]);
+    for (int dy = -1; dy <= 1; ++dy) {
+      const int y = iy + dy;
+      if (y < 0 || y >= ny) continue;
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = ix + dx;
+        if (x < 0 || x >= nx || (dx == 0 && dy == 0)) continue;
+        const std::size_t n = static_cast<std::size_t>(y) * nx + x;
+        const std::uint64_t free = grid.free_slices(n);
+        if (!(spread & free & ~reached_[n])) continue;
+        const std::uint64_t grown = ring.fill(spread & free, free) & ~reached_[n];
+        if (!grown) continue;
+        reached_[n] |= grown;
+        queue_.push_back(static_cast<std::uint32_t>(n));
+      }
+    }
+  }
+  reached_columns_ = static_cast<std::size_t>(
+      std::count_if(reached_.begin(), reached_.end(), [](std::uint64_t m) { return m != 0; }));
+  chamfer();
+}
+
+bool ReachableSet::contains(const Pose2& pose) const {
+  if (!grid_) return false;
+  const std::size_t cell = grid_->cell_of(pose);
+  return (reached_[cell / grid_->slices()] >> (cell % grid_->slices())) & 1;
+}
+
+bool ReachableSet::column_reached(const Pose2& pose) const {
+  return grid_ && reached_[grid_->column_of(pose)] != 0;
+}
+
+double ReachableSet::column_share() const {
+  return reached_.empty() ? 0.0
+                          : static_cast<double>(reached_columns_) /
+                                static_cast<double>(reached_.size());
+}
+
+double ReachableSet::distance_to(const Pose2& pose) const {
+  if (!grid_ || reached_columns_ == 0) return std::numeric_limits<double>::infinity();
+  return distance_[grid_->column_of(pose)];
+}
+
+void ReachableSet::chamfer() {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const int nx = grid_->nx(), ny = grid_->ny();
+  {
+    // Two-pass 8-neighbour chamfer transform (Rosenfeld–Pfaltz, 1966).
+    distance_.assign(reached_.size(), kInf);
+    for (std::size_t c = 0; c < reached_.size(); ++c)
+      if (reached_[c]) distance_[c] = 0.0;
+    const double hx = grid_->hx(), hy = grid_->hy(), hd = std::hypot(hx, hy);
+    auto relax = [&](int x, int y, int dx, int dy, double w) {
+      const int u = x + dx, v = y + dy;
+      if (u < 0 || u >= nx || v < 0 || v >= ny) return;
+      double& d = distance_[static_cast<std::size_t>(y) * nx + x];
+      d = std::min(d, distance_[static_cast<std::size_t>(v) * nx + u] + w);
+    };
+    for (int y = 0; y < ny; ++y)
+      for (int x = 0; x < nx; ++x) {
+        relax(x, y, -1, 0, hx), relax(x, y, 0, -1, hy);
+        relax(x, y, -1, -1, hd), relax(x, y, 1, -1, hd);
+      }
+    for (int y = ny - 1; y >= 0; --y)
+      for (int x = nx - 1; x >= 0; --x) {
+        relax(x, y, 1, 0, hx), relax(x, y, 0, 1, hy);
+        relax(x, y, 1, 1, hd), relax(x, y, -1, 1, hd);
+      }
   }
 }
 

@@ -88,6 +88,11 @@ class FreeGrid {
   double slice_width() const { return dtheta_; }
   //! Number of blocked cells (for reports and tests).
   std::size_t blocked_count() const;
+  //! With at most 64 slices: bit k of column (ix, iy) is set when cell
+  //! (ix, iy, k) is not blocked (kept up to date by move_object()).
+  bool has_column_masks() const { return !free_mask_.empty(); }
+  std::uint64_t free_slices(std::size_t column) const { return free_mask_[column]; }
+  std::size_t column_of(const Pose2& pose) const { return cell_of(pose) / slices_; }
 
  private:
   struct ObjectState {
@@ -104,6 +109,38 @@ class FreeGrid {
   std::vector<std::array<Vec2, 4>> cores_;  //!< per slice: the core's corners, rotated
   std::vector<ObjectState> objects_;
   std::vector<std::uint16_t> counts_;
+  std::vector<std::uint64_t> free_mask_;  //!< per column (iy·nx + ix), slices <= 64 only
+};
+
+//! Every cell joined to one start cell by unblocked cells (26-neighbours, as
+//! ReachabilityQuery): a certified outer approximation of the poses any
+//! collision-free motion from the start can reach. Needs a grid with at
+//! most 64 slices; the fill works on whole columns of slices at once (one
+//! 64-bit mask per (x, y) column), so a room-sized fill takes about a
+//! millisecond. Beyond the paper: the tours' refusal of impossible legs and
+//! the annealer's escape from blocked layouts (docs/optimize.md).
+class ReachableSet {
+ public:
+  //! Fills from `start` (a free pose). Empty when its cell is blocked.
+  void fill(const FreeGrid& grid, const Pose2& start);
+  //! True when `pose`'s cell was reached.
+  bool contains(const Pose2& pose) const;
+  //! True when some slice of the column holding `pose` was reached.
+  bool column_reached(const Pose2& pose) const;
+  //! Distance (metres, 8-neighbour chamfer over the columns, through blocked
+  //! columns too) from `pose`'s column to the nearest reached column; 0 on a
+  //! reached column, +inf when nothing was reached.
+  double distance_to(const Pose2& pose) const;
+  //! Reached columns / all columns.
+  double column_share() const;
+
+ private:
+  const FreeGrid* grid_ = nullptr;
+  std::vector<std::uint64_t> reached_;  //!< per column: reached slices
+  std::vector<std::uint32_t> queue_;
+  std::size_t reached_columns_ = 0;
+  std::vector<double> distance_;  //!< per column, see distance_to()
+  void chamfer();
 };
 
 //! Bidirectional search of the unblocked cells between two poses' cells;

@@ -616,7 +616,7 @@ class Reader {
 
   Weights weights(const Json& j, const std::string& ptr) const {
     expect_object(j, ptr);
-    check_keys(j, ptr, {"path", "interior"});
+    check_keys(j, ptr, {"path", "interior", "clearance_width"});
     Weights w;
     if (const Json* p = optional(j, "path")) {
       fixed_array(
@@ -629,6 +629,8 @@ class Reader {
                     w.interior[i] = weight(e, ep);
                   });
     }
+    if (const Json* c = optional(j, "clearance_width"))
+      w.clearance_width = positive(*c, child(ptr, "clearance_width"));
     return w;
   }
 
@@ -905,6 +907,8 @@ std::string write_scene(const Scene& scene) {
         {"path",
          OrderedJson::array({scene.weights.path[0], scene.weights.path[1], scene.weights.path[2]})},
         {"interior", OrderedJson::array({scene.weights.interior[0], scene.weights.interior[1]})}};
+    if (scene.weights.clearance_width != Weights{}.clearance_width)
+      root["weights"]["clearance_width"] = scene.weights.clearance_width;
   }
   std::string out;
   pretty(root, 0, out);

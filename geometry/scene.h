@@ -122,6 +122,13 @@ struct Activity {
 struct Weights {
   std::array<double, 3> path{1.0, 1.0, 1.0};  //!< length, rotation, clearance
   std::array<double, 2> interior{1.0, 1.0};   //!< pairwise distance, pairwise rotation
+  //! Corridor width (m) below which the clearance cost grows: the cost of a
+  //! waypoint is max(0, clearance_width − width). Default: 1.525 m, the
+  //! wheelchair turning diameter of the ADA standards (2010, §304.3.1), so
+  //! that ordinary rooms feel it; the paper's 0.915 m (the ADA's clear
+  //! width of an accessible route) is never reached by a route a chair
+  //! can drive, and the term then never shapes a layout.
+  double clearance_width = 1.525;
   friend bool operator==(const Weights&, const Weights&) = default;
 };
 

@@ -1,5 +1,6 @@
 #include "optimize/annealer.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -17,6 +18,12 @@ bool metropolis_accept(double delta, double t, double u) {
   return u < acceptance_probability(delta, t);
 }
 
+bool Acceptance::rejects(double lower_bound) const {
+  if (!active) return false;
+  const double margin = 1e-9 * std::max(1.0, std::abs(lower_bound));
+  return !metropolis_accept(lower_bound - margin - current, temperature, u);
+}
+
 namespace {
 
 //! a·(b/a)^(k/(n−1)): geometric interpolation over the iterations.
@@ -32,6 +39,17 @@ double temperature_at(const AnnealOptions& options, int k) {
 }
 
 namespace {
+
+//! Sets `move` to a jump to the bounds' point (rx, ry) (in [0, 1)²), turned
+//! by a multiple of π/2 picked by `rt` in [0, 1).
+void jump_to(const AnnealOptions& options, double rx, double ry, double rt, Move& move) {
+  const auto& b = *options.bounds;
+  move.to.x = b[0] + rx * (b[2] - b[0]);
+  move.to.y = b[1] + ry * (b[3] - b[1]);
+  const int quarter = std::min(3, static_cast<int>(rt * 4.0));
+  move.to.theta = geometry::wrap_angle(move.from.theta + quarter * (std::numbers::pi / 2));
+  move.jump = true;
+}
 
 //! One proposal for `object` at iteration k. Draws in a fixed order: the
 //! kind of move, then its parameters (the object was drawn before).
@@ -61,10 +79,7 @@ Move propose_move(const AnnealOptions& options, const Pose2& from, int object, i
   if (options.bounds && jump < options.jump_probability * shrink) {
     // A jump anywhere in the bounds (a symmetric proposal): escapes places
     // that small steps cannot leave while the chain is hot.
-    const auto& b = *options.bounds;
-    move.to.x = b[0] + rx * (b[2] - b[0]);
-    move.to.y = b[1] + ry * (b[3] - b[1]);
-    move.jump = true;
+    jump_to(options, rx, ry, unit(rng), move);
   } else {
     move.to.x += (2.0 * rx - 1.0) * step;
     move.to.y += (2.0 * ry - 1.0) * step;
@@ -93,7 +108,8 @@ void decide(const Move& move, double u, Chain& chain, TraceEntry& e, AnnealResul
     return;
   }
   ++result.valid_proposals;
-  const double proposed = callbacks.cost(chain.poses, move);
+  const Acceptance acceptance{true, chain.current, e.temperature, u};
+  const double proposed = callbacks.cost(chain.poses, move, acceptance);
   e.proposed_cost = proposed;
   e.accepted = metropolis_accept(proposed - chain.current, e.temperature, u);
   if (!e.accepted) {
@@ -124,7 +140,7 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
 
   AnnealResult result;
   Chain chain{std::move(poses), 0.0};
-  chain.current = callbacks.cost(chain.poses, Move{});
+  chain.current = callbacks.cost(chain.poses, Move{}, Acceptance{});
   result.initial_cost = chain.current;
   result.best = chain.poses;
   result.best_cost = std::numeric_limits<double>::infinity();
@@ -143,10 +159,35 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     TraceEntry e;
     e.iteration = k;
     e.temperature = temperature_at(options, k);
-    const int object =
+    int object =
         candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
-    const Move move = propose_move(options, chain.poses[object], object, k, rng, unit);
+    bool focused = false;
+    if (callbacks.focus) {
+      const std::vector<int> focus = callbacks.focus();
+      if (!focus.empty() && unit(rng) < options.focus_probability) {
+        object = focus[std::uniform_int_distribution<std::size_t>(0, focus.size() - 1)(rng)];
+        focused = true;
+      }
+    }
+    Move move = propose_move(options, chain.poses[object], object, k, rng, unit);
+    if (focused && options.bounds && !move.jump && unit(rng) < 0.5) {
+      const double rx = unit(rng), ry = unit(rng);
+      move = Move{object, chain.poses[object], chain.poses[object]};
+      jump_to(options, rx, ry, unit(rng), move);
+    }
     const double u = unit(rng);  // drawn before the proposal is costed
+    // A jump is redrawn until valid (at most jump_attempts draws in all, or
+    // focus_jump_attempts for a focus object); decide() checks the last
+    // draw again.
+    const int attempts = focused ? options.focus_jump_attempts : options.jump_attempts;
+    for (int a = 1; move.jump && a < attempts; ++a) {
+      chain.poses[object] = move.to;
+      const bool ok = callbacks.move_valid(chain.poses, object);
+      chain.poses[object] = move.from;
+      if (ok) break;
+      const double rx = unit(rng), ry = unit(rng);
+      jump_to(options, rx, ry, unit(rng), move);
+    }
     e.object = object;
     e.rotation = move.rotation;
     e.jump = move.jump;

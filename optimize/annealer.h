@@ -39,6 +39,20 @@ struct AnnealOptions {
   //! Share of translations that jump to a uniform position in `bounds` at
   //! t_start; it shrinks with the step (geometrically to step_end/step_start).
   double jump_probability = 0.2;
+  //! A jump also turns the object by a uniform multiple of π/2, and is
+  //! redrawn (position and turn) until the exact validity test passes, at
+  //! most this many draws in all: a large object in a crowded room is
+  //! seldom valid at a uniform position, and a jump that is never valid
+  //! cannot carry it out of a place that blocks the room (docs/optimize.md
+  //! "Blocked layouts"). 1: a single draw.
+  int jump_attempts = 25;
+  //! Share of proposals that move one of the callbacks' focus objects
+  //! (AnnealCallbacks::focus) when there are any; half of those moves are
+  //! jumps (whatever the temperature) with up to focus_jump_attempts draws:
+  //! an object that walls the door in is often wedged, so that only a
+  //! relocation frees it.
+  double focus_probability = 0.5;
+  int focus_jump_attempts = 200;
 };
 
 //! One proposed move of one object.
@@ -77,13 +91,32 @@ struct AnnealResult {
   std::vector<TraceEntry> trace;
 };
 
+//! The Metropolis decision a proposal faces, known before it is costed (the
+//! uniform is drawn first): lets the cost stop early once a lower bound of
+//! the proposal's cost is already rejected (docs/optimize.md "Early
+//! rejection").
+struct Acceptance {
+  bool active = false;  //!< false for the initial evaluation: nothing is decided
+  double current = 0.0;
+  double temperature = 0.0;
+  double u = 0.0;
+  //! True when every cost >= `lower_bound` is rejected. Exact: it decides
+  //! on lower_bound less a relative 1e-9 (far above the rounding of the
+  //! cost's sums), and the acceptance probability falls with the cost, so a
+  //! full evaluation would reject too.
+  bool rejects(double lower_bound) const;
+};
+
 struct AnnealCallbacks {
   //! Exact validity of the layout after moving object `moved` (only that
   //! object's constraints need checking). Required.
   std::function<bool(const std::vector<Pose2>& poses, int moved)> move_valid;
   //! Cost of the layout; `move` is what changed since the last call that was
-  //! not reverted (object -1: the initial layout). Required.
-  std::function<double(const std::vector<Pose2>& poses, const Move& move)> cost;
+  //! not reverted (object -1: the initial layout). It may return a lower
+  //! bound b of the cost instead when acceptance.rejects(b). Required.
+  std::function<double(const std::vector<Pose2>& poses, const Move& move,
+                       const Acceptance& acceptance)>
+      cost;
   //! A move was evaluated and rejected: the caller restores its own state.
   std::function<void(const Move& move)> rejected;
   //! Whole-layout validity for the best-layout bookkeeping (default: valid).
@@ -92,6 +125,11 @@ struct AnnealCallbacks {
   std::function<void()> new_best;
   //! Called after every iteration.
   std::function<void(const TraceEntry& entry)> progress;
+  //! Objects the next proposal should rather move (movable indices; empty or
+  //! unset: none): with focus_probability the moved object is drawn from
+  //! them instead of from all movable objects. Beyond the paper: the design
+  //! runner names the objects that wall the door in (docs/optimize.md).
+  std::function<std::vector<int>()> focus;
 };
 
 //! min(1, exp(−delta/t)); 1 for delta <= 0, 0 for t <= 0 and delta > 0.

@@ -124,15 +124,18 @@ InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
   return c;
 }
 
-std::array<double, 3> CostModel::tour_costs(int k, const planning::Tour& tour) const {
+std::array<double, 3> CostModel::tour_costs(int k, const planning::Tour& tour,
+                                            std::span<const double> blockage) const {
   const auto& nodes = sequences_[k].nodes;
   std::array<double, 3> c{0.0, 0.0, 0.0};
   const std::size_t legs = nodes.size() - 1;
   if (!tour.found) {
-    // Legs the planner could join (stats.depth) are charged half their share.
+    // Legs the planner could join (stats.depth) are charged half their
+    // share, the others 1 + b/2 (see the header).
     const std::size_t joined = std::min<std::size_t>(std::max(tour.stats.depth, 0), legs);
     for (std::size_t i = 1; i < nodes.size(); ++i) {
-      const double share = i <= joined ? 0.5 : 1.0;
+      const double b = i - 1 < blockage.size() ? blockage[i - 1] : 0.0;
+      const double share = i <= joined ? 0.5 : 1.0 + 0.5 * b;
       c[0] += share * object_weight(nodes[i]) * unfound_length() / static_cast<double>(legs);
     }
     return c;
@@ -148,13 +151,29 @@ std::array<double, 3> CostModel::tour_costs(int k, const planning::Tour& tour) c
   return c;
 }
 
+double CostModel::tour_total(int k, const planning::Tour& tour,
+                             std::span<const double> blockage) const {
+  const auto c = tour_costs(k, tour, blockage);
+  const auto& wp = scene_.weights.path;
+  const double l = seq_weight_[k];
+  if (!tour.found) return wp[0] * l * c[0];
+  return wp[0] * l * c[0] + wp[1] * l * c[1] + wp[2] * l * c[2];
+}
+
 CostTerms CostModel::evaluate(const std::vector<Pose2>& poses,
-                              const std::vector<planning::Tour>& tours) const {
+                              const std::vector<planning::Tour>& tours,
+                              const std::vector<std::vector<double>>* blockage,
+                              int tours_counted) const {
   assert(tours.size() == sequences_.size());
+  assert(!blockage || blockage->size() == tours.size());
   CostTerms t;
   const auto& wp = scene_.weights.path;
-  for (std::size_t k = 0; k < tours.size(); ++k) {
-    const auto c = tour_costs(static_cast<int>(k), tours[k]);
+  const std::size_t counted =
+      tours_counted < 0 ? tours.size() : std::min(tours.size(), std::size_t(tours_counted));
+  for (std::size_t k = 0; k < counted; ++k) {
+    const auto c = tour_costs(static_cast<int>(k), tours[k],
+                              blockage ? std::span<const double>((*blockage)[k])
+                                       : std::span<const double>());
     const double l = seq_weight_[k];
     ++t.tours_total;
     if (tours[k].found) {

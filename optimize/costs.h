@@ -19,10 +19,16 @@
 // - A tour that cannot be found costs as if its length were
 //   kUnfoundPerimeterFactor × the room's perimeter P, spread evenly over its
 //   legs and weighted by α̂ like a found tour; its rotation and clearance
-//   count 0. So that the annealer can tell "nearly tourable" from "blocked at
-//   the door", the first Tour::stats.depth legs (those the planner could join
-//   before failing) are charged half their share: an unfound tour costs
-//   between kUnfoundPerimeterFactor·P/2 and kUnfoundPerimeterFactor·P.
+//   count 0. So that the annealer can tell "nearly tourable" from "sealed
+//   off", each leg's share is graded: the first Tour::stats.depth legs (those
+//   the planner could join before failing) are charged 1/2 of it; a leg not
+//   joined is charged 3/4 + b/4, where b (planning::ReachGate::blockage) is 0
+//   when the free grid lets the door reach one of the leg's goal poses and
+//   else grows from 1/2 to 1 with the distance from the door's reachable
+//   region to the nearest goal pose (b = 1 when no grade is given). An
+//   unfound tour costs between kUnfoundPerimeterFactor·P/2 and
+//   kUnfoundPerimeterFactor·P; a layout that walls less of the room off
+//   from the door costs less (docs/optimize.md "Blocked layouts").
 // - Interior: pairwise distance (Σ relations weight·(|c_a − c_b| − d)² plus,
 //   per object with a wall distance preference, (footprint-to-nearest-wall
 //   distance − d)²) and pairwise rotation (Σ relations weight·wrap(θ_a − θ_b −
@@ -33,6 +39,7 @@
 
 #include <array>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -90,11 +97,20 @@ class CostModel {
   InteriorCosts interior(const std::vector<Pose2>& poses) const;
   //! α̂-weighted [length, rotation, clearance deficit] of one tour of
   //! sequence k (unweighted by L̂ and w); unfound: [penalty, 0, 0] with the
-  //! penalty graded by stats.depth (see the header).
-  std::array<double, 3> tour_costs(int k, const planning::Tour& tour) const;
-  //! All terms for poses and the M tours (tours[k] tours sequences()[k]).
-  CostTerms evaluate(const std::vector<Pose2>& poses,
-                     const std::vector<planning::Tour>& tours) const;
+  //! penalty graded by stats.depth and `blockage` (b of each leg, in
+  //! sequence order; empty: b = 1), see the header.
+  std::array<double, 3> tour_costs(int k, const planning::Tour& tour,
+                                   std::span<const double> blockage = {}) const;
+  //! Tour k's share of the total: its path terms weighted by w and L̂.
+  double tour_total(int k, const planning::Tour& tour,
+                    std::span<const double> blockage = {}) const;
+  //! All terms for poses and the M tours (tours[k] tours sequences()[k]);
+  //! `blockage` (may be null) holds each tour's leg grades. With
+  //! `tours_counted` >= 0 only the first that many tours count (the terms of
+  //! an early-rejected layout, tours_total = tours_counted).
+  CostTerms evaluate(const std::vector<Pose2>& poses, const std::vector<planning::Tour>& tours,
+                     const std::vector<std::vector<double>>* blockage = nullptr,
+                     int tours_counted = -1) const;
 
   //! Distance from the footprint to the room edge `edge` (vertices edge, edge+1).
   double wall_distance(const geometry::Polygon& footprint, int edge) const;

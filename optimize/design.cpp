@@ -57,55 +57,138 @@ namespace {
 
 //! The M tours of one layout, planned in parallel (baseline or proposed):
 //! shared by design() and replay_planning().
+//!
+//! Early rejection (docs/optimize.md): given a Bound, tours are started in
+//! index order and, as each finishes, the longest finished prefix of tours
+//! adds its cost to the bound; once the Acceptance rejects the bound, no
+//! further tour starts and the running ones stop at their next leg. The
+//! prefix at which that happens depends only on the tours' outcomes, never
+//! on the threads, and the proposed planner keeps only the work of that
+//! prefix (ReusePlanner::end_iteration), so runs stay identical for any
+//! thread count.
 class TourRound {
  public:
+  //! Cost of the tours planned so far, and the decision that ends a round.
+  struct Bound {
+    const CostModel* model;
+    double base;  //!< the cost known before planning (the interior terms)
+    const Acceptance* acceptance;
+  };
+  struct Outcome {
+    int dropped = 0;          //!< kept tours that the re-certification dropped
+    int kept = 0;             //!< tours planned to the end and counted
+    bool rejected = false;    //!< the bound was rejected after `kept` tours
+    double bound = 0.0;       //!< base + the kept tours' costs
+  };
+
   TourRound(const geometry::Scene& scene, const DesignOptions& options,
             const std::vector<Sequence>& sequences)
       : work_(scene),
         cspace_(work_, options.cspace),
+        gate_(work_, cspace_, options.gate),
         options_(options),
         sequences_(&sequences),
         pool_(options.threads),
         tours_(sequences.size()),
-        invalidated_(sequences.size(), 0) {
-    if (options.proposed)
+        invalidated_(sequences.size(), 0),
+        blockage_(sequences.size()),
+        finished_(sequences.size(), 0) {
+    if (options.proposed) {
       reuse_ = std::make_unique<planning::ReusePlanner>(work_, cspace_, options.tour, options.reuse,
                                                         options.seed);
-    const planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
-    for (std::size_t k = 0; k < sequences.size(); ++k)
+      if (options.refuse_impossible) reuse_->set_gate(&gate_);
+    }
+    planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
+    if (!reuse_ && options.refuse_impossible) hooks.gate = &gate_;
+    hooks.cancel = &cancel_;
+    for (std::size_t k = 0; k < sequences.size(); ++k) {
+      hooks.tour = static_cast<int>(k);
       planners_.push_back(std::make_unique<planning::TourPlanner>(
           work_, cspace_, options.tour, tour_seed(options.seed, 0, static_cast<int>(k)), hooks));
+    }
   }
 
   geometry::Scene& work() { return work_; }
   geometry::CSpace& cspace() { return cspace_; }
+  const planning::ReachGate& gate() const { return gate_; }
   int threads() const { return pool_.size(); }
   std::vector<planning::Tour>& tours() { return tours_; }
+  //! Each tour's leg grades (optimize/costs.h; empty for found tours).
+  const std::vector<std::vector<double>>& blockage() const { return blockage_; }
   planning::ReusePlanner* reuse() { return reuse_.get(); }
 
-  //! Plans round `iteration` in the current layout; returns the tours the
-  //! re-certification dropped. `legs` gets the proposed planner's counts.
-  int plan(int iteration, std::optional<planning::ReuseCounters>& legs) {
+  //! Plans round `iteration` in the current layout. `legs` gets the
+  //! proposed planner's counts; `bound` (may be null) enables early rejection.
+  Outcome plan(int iteration, std::optional<planning::ReuseCounters>& legs,
+               const Bound* bound = nullptr) {
     const int m = static_cast<int>(tours_.size());
+    gate_.invalidate();
+    grades_.assign(work_.objects.size(), -1.0);
+    cancel_.store(false);
+    std::fill(finished_.begin(), finished_.end(), 0);
+    Outcome out;
+    out.kept = m;
+    out.bound = bound ? bound->base : 0.0;
+    int prefix = 0;
     // The proposed planner's legs derive from (seed, iteration), not the tour.
     if (reuse_) reuse_->begin_iteration(tour_seed(options_.seed, iteration, m));
     pool_.run(m, [&](int k) {
+      if (cancel_.load()) return;  // the layout is rejected: not started
       planners_[k]->set_seed(tour_seed(options_.seed, iteration, k));
       tours_[k] = planners_[k]->plan((*sequences_)[k].nodes);
       invalidated_[k] = planning::recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k],
                                                reuse_ ? reuse_->measures() : nullptr)
                             ? 0
                             : 1;
+      grade(k);
+      if (!bound) return;
+      std::lock_guard lock(mutex_);
+      finished_[k] = 1;
+      while (!out.rejected && prefix < m && finished_[prefix]) {
+        out.bound += bound->model->tour_total(prefix, tours_[prefix], blockage_[prefix]);
+        ++prefix;
+        if (bound->acceptance->rejects(out.bound)) {
+          out.rejected = true;
+          out.kept = prefix;
+          cancel_.store(true);
+        }
+      }
     });
-    if (reuse_) legs = reuse_->end_iteration();
-    int dropped = 0;
-    for (int k = 0; k < m; ++k) dropped += invalidated_[k];
-    return dropped;
+    if (reuse_) legs = reuse_->end_iteration(out.kept);
+    for (int k = 0; k < out.kept; ++k) out.dropped += invalidated_[k];
+    return out;
   }
 
  private:
+  //! Fills blockage_[k]: for an unfound tour, the grade of each leg's stop
+  //! (computed once per object and round); empty otherwise.
+  void grade(int k) {
+    blockage_[k].clear();
+    if (tours_[k].found || !options_.escape) return;
+    const auto& nodes = (*sequences_)[k].nodes;
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+      const int object = work_.find_object(nodes[i]);
+      if (object < 0) {
+        blockage_[k].push_back(1.0);
+        continue;
+      }
+      double b;
+      {
+        std::lock_guard lock(mutex_);
+        b = grades_[object];
+      }
+      if (b < 0.0) {
+        b = gate_.blockage(planners_[k]->goals_for(nodes[i]));
+        std::lock_guard lock(mutex_);
+        grades_[object] = b;
+      }
+      blockage_[k].push_back(b);
+    }
+  }
+
   geometry::Scene work_;  // poses follow the annealer's current layout
   geometry::CSpace cspace_;
+  planning::ReachGate gate_;
   DesignOptions options_;
   const std::vector<Sequence>* sequences_;
   std::unique_ptr<planning::ReusePlanner> reuse_;
@@ -113,6 +196,11 @@ class TourRound {
   ThreadPool pool_;
   std::vector<planning::Tour> tours_;
   std::vector<int> invalidated_;
+  std::vector<std::vector<double>> blockage_;
+  std::vector<char> finished_;
+  std::vector<double> grades_;  //!< per object this round (−1: not yet)
+  std::atomic<bool> cancel_{false};
+  std::mutex mutex_;
 };
 
 }  // namespace
@@ -152,7 +240,8 @@ class DesignRun {
 
   DesignResult run() {
     plan_current();
-    current_terms_ = model_.evaluate(poses_, tours_);
+    current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
+    focus_current_ = walling_objects();
     result_.initial = current_terms_;
     current_tours_ = tours_;
     const AnnealOptions schedule = make_schedule();
@@ -164,15 +253,20 @@ class DesignRun {
   }
 
  private:
-  //! Plans the M tours of the current layout (round `iteration_`).
-  void plan_current() {
+  //! Plans the M tours of the current layout (round `iteration_`); with a
+  //! bound, stops once the bound is rejected (outcome_.rejected).
+  void plan_current(const TourRound::Bound* bound = nullptr) {
     const auto p0 = Clock::now();
     if (options_.layouts_out) {
       options_.layouts_out->emplace_back();
       for (int i = 0; i < cspace_.object_count(); ++i)
         options_.layouts_out->back().push_back(cspace_.object_pose(i));
     }
-    result_.tours_invalidated += round_.plan(iteration_, iteration_legs_);
+    outcome_ = round_.plan(iteration_, iteration_legs_, bound);
+    result_.tours_invalidated += outcome_.dropped;
+    result_.tours_planned += outcome_.kept;
+    for (int k = 0; k < outcome_.kept; ++k) result_.legs_refused += tours_[k].stats.legs_refused;
+    if (outcome_.rejected) skipped_from(outcome_.kept);
     planning_ms_ = 1e3 * seconds_since(p0);
     result_.time_planning_s += planning_ms_ / 1e3;
   }
@@ -196,11 +290,14 @@ class DesignRun {
   AnnealCallbacks callbacks() {
     AnnealCallbacks cb;
     cb.move_valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
-    cb.cost = [this](const std::vector<Pose2>& p, const Move& move) { return cost(p, move); };
+    cb.cost = [this](const std::vector<Pose2>& p, const Move& move, const Acceptance& a) {
+      return cost(p, move, a);
+    };
     cb.rejected = [this](const Move& move) { undo(move); };
     cb.layout_valid = [this](const std::vector<Pose2>&) { return layout_violation(work_).empty(); };
     cb.new_best = [this] { new_best(); };
     cb.progress = [this](const TraceEntry& e) { step_done(e); };
+    cb.focus = [this] { return focus_current_; };
     return cb;
   }
 
@@ -213,16 +310,69 @@ class DesignRun {
     return ok;
   }
 
-  //! Applies a proposal to the C-space, tours it and returns its cost.
-  double cost(const std::vector<Pose2>& p, const Move& move) {
+  //! Applies a proposal to the C-space, tours it and returns its cost, or
+  //! a lower bound of it that `acceptance` rejects (early rejection).
+  double cost(const std::vector<Pose2>& p, const Move& move, const Acceptance& acceptance) {
     if (move.object < 0) return current_terms_.total();
     ++iteration_;
     work_.objects[move.object].pose = move.to;
     cspace_.move_object(move.object, move.to);
     planning_ms_ = 0.0;
-    if (plan_every_iteration_) plan_current();
-    proposed_terms_ = model_.evaluate(p, tours_);
+    rejected_early_ = false;
+    outcome_ = {};
+    if (!plan_every_iteration_) {
+      proposed_terms_ = model_.evaluate(p, tours_);
+      return proposed_terms_.total();
+    }
+    if (options_.early_reject) {
+      const InteriorCosts in = model_.interior(p);
+      const double base = scene_.weights.interior[0] * in.distance +
+                          scene_.weights.interior[1] * in.rotation;
+      if (acceptance.rejects(base)) {
+        // Rejected on the interior alone: no tour is planned.
+        rejected_early_ = true;
+        proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage(), 0);
+        skipped_from(0);
+        return base;
+      }
+      const TourRound::Bound bound{&model_, base, &acceptance};
+      plan_current(&bound);
+      if (outcome_.rejected) {
+        rejected_early_ = true;
+        proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage(), outcome_.kept);
+        return outcome_.bound;
+      }
+    } else {
+      plan_current();
+    }
+    proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage());
+    focus_proposed_ = walling_objects();
     return proposed_terms_.total();
+  }
+
+  //! With `escape`, when a stop of an unfound tour is walled off from the
+  //! door (grade > 0), the movable objects bordering the door's reachable
+  //! region (within the chair's half length and 25 cm): the annealer's focus.
+  std::vector<int> walling_objects() const {
+    std::vector<int> out;
+    if (!options_.escape) return out;
+    bool walled = false;
+    for (const auto& grades : round_.blockage())
+      for (double b : grades) walled = walled || b > 0.0;
+    if (!walled) return out;
+    const double within = 0.5 * scene_.wheelchair.length + 0.25;
+    for (int i : round_.gate().bordering(within))
+      if (movable_[i]) out.push_back(i);
+    return out;
+  }
+
+  //! Counts an early rejection that left tours `first`… unplanned.
+  void skipped_from(int first) {
+    ++result_.early.proposals;
+    for (std::size_t k = static_cast<std::size_t>(first); k < sequences_.size(); ++k) {
+      ++result_.early.tours_skipped;
+      result_.early.legs_skipped += static_cast<long>(sequences_[k].nodes.size()) - 1;
+    }
   }
 
   void undo(const Move& move) {
@@ -250,11 +400,13 @@ class DesignRun {
       step.proposed = proposed_terms_;
       step.planning_ms = planning_ms_;
       step.planned = plan_every_iteration_;
+      step.rejected_early = rejected_early_;
       if (plan_every_iteration_) step.legs = iteration_legs_;
     }
     if (e.accepted) {
       current_terms_ = proposed_terms_;
       current_tours_ = tours_;
+      focus_current_ = focus_proposed_;
     }
     result_.trace.push_back(step);
     if (progress_) progress_(step);
@@ -280,14 +432,20 @@ class DesignRun {
       iteration_ = r.proposals + 1;
       plan_current();
       result_.tours = tours_;
-      result_.final = model_.evaluate(r.best, tours_);
+      result_.final = model_.evaluate(r.best, tours_, &round_.blockage());
     }
     result_.proposals = r.proposals;
     result_.valid_proposals = r.valid_proposals;
     result_.accepted = r.accepted;
     result_.stopped = r.stopped;
     result_.proposed = options_.proposed;
+    result_.gate_fills = round_.gate().fills();
+    result_.gate_ms = round_.gate().fill_ms();
+    if (result_.tours_planned > 0)
+      result_.early.saved_s_estimate = result_.early.tours_skipped * result_.time_planning_s /
+                                       result_.tours_planned;
     if (planning::ReusePlanner* reuse = round_.reuse()) {
+      result_.legs_refused = static_cast<long>(reuse->totals().legs_proven);
       result_.reuse = options_.reuse.names();
       result_.counters = reuse->totals();
     }
@@ -306,9 +464,12 @@ class DesignRun {
   std::vector<planning::Tour>& tours_;
   std::vector<Pose2> poses_;
   std::vector<bool> movable_;
+  std::vector<int> focus_current_, focus_proposed_;  //!< walling_objects() of the layouts
   bool plan_every_iteration_ = true;
   int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
   double planning_ms_ = 0.0;
+  TourRound::Outcome outcome_;
+  bool rejected_early_ = false;
   std::optional<planning::ReuseCounters> iteration_legs_;
   CostTerms current_terms_, proposed_terms_;
   std::vector<planning::Tour> current_tours_;
@@ -342,7 +503,7 @@ ReplayResult replay_planning(const geometry::Scene& scene,
       round.cspace().move_object(i, poses[i]);
     }
     const auto p0 = Clock::now();
-    out.tours_invalidated += round.plan(static_cast<int>(r), legs);
+    out.tours_invalidated += round.plan(static_cast<int>(r), legs).dropped;
     out.planning_s += seconds_since(p0);
     for (const planning::Tour& t : round.tours()) {
       ++out.tours_total;

@@ -33,6 +33,7 @@
 #include "optimize/annealer.h"
 #include "optimize/costs.h"
 #include "optimize/sequences.h"
+#include "planning/reach_gate.h"
 #include "planning/recheck.h"
 #include "planning/reuse.h"
 #include "planning/tour.h"
@@ -51,6 +52,17 @@ struct DesignOptions {
   //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
   bool proposed = false;
   planning::ReuseOptions reuse;  //!< its techniques (all on by default)
+  //! Beyond the paper (docs/optimize.md): legs the free grid proves
+  //! impossible are refused before any RRT runs, for either planner. The
+  //! baseline's tours are the same with it as without.
+  bool refuse_impossible = true;
+  //! Beyond the paper: unfound tours are charged by how walled off their
+  //! stops are (optimize/costs.h), so blocked layouts can be climbed out of.
+  bool escape = true;
+  //! Beyond the paper: a proposal stops being planned once a lower bound of
+  //! its cost is rejected by the Metropolis draw (the same decision).
+  bool early_reject = true;
+  planning::ReachGateOptions gate;  //!< the grid behind refusals and escape
   //! When set, the object poses of every planned layout are appended here,
   //! in planning order (the input of replay_planning()).
   std::vector<std::vector<Pose2>>* layouts_out = nullptr;
@@ -62,6 +74,9 @@ struct DesignStep {
   CostTerms proposed;        //!< terms of the proposed layout (zeros when invalid)
   double planning_ms = 0.0;  //!< wall time of planning the M tours
   bool planned = false;      //!< the M tours were planned for this proposal
+  //! Rejected on a lower bound: `proposed` holds the interior terms and the
+  //! tours planned before the decision (tours_total of them).
+  bool rejected_early = false;
   //! The proposed planner's leg counts of this iteration (its trace "legs").
   std::optional<planning::ReuseCounters> legs;
 };
@@ -85,6 +100,19 @@ struct DesignResult {
   //! layout are toured (the cost does not depend on the tours).
   bool planned_every_iteration = true;
   std::vector<DesignStep> trace;
+  //! Early rejection: proposals rejected on a bound and the tours they left
+  //! unplanned (or stopped), with an estimate of the planning time saved
+  //! (tours skipped × the run's mean planning time per planned tour).
+  struct Early {
+    int proposals = 0;
+    int tours_skipped = 0;
+    long legs_skipped = 0;  //!< legs of the skipped tours' sequences
+    double saved_s_estimate = 0.0;
+  } early;
+  int tours_planned = 0;     //!< tours planned to the end (all rounds)
+  long legs_refused = 0;     //!< legs the free grid proved impossible
+  std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
+  double gate_ms = 0.0;          //!< their total time
   bool proposed = false;             //!< planned by the proposed planner
   std::string reuse;                 //!< its techniques ("none" … "samples,steering,paths,trees")
   planning::ReuseCounters counters;  //!< its leg counts and RRT-iterations histogram

@@ -194,6 +194,10 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
         {"best", finite_or_null(e.best_cost)}};
     if (s.planned) {
       step["tours_found"] = s.proposed.tours_found;
+      if (s.rejected_early) {
+        step["rejected_early"] = true;
+        step["tours_planned"] = s.proposed.tours_total;
+      }
       step["planning_ms"] = s.planning_ms;
       if (s.legs) {
         const auto& c = *s.legs;
@@ -218,6 +222,16 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
       {"threads", result.threads},
       {"planned_every_iteration", result.planned_every_iteration},
       {"tours_invalidated", result.tours_invalidated},
+      {"tours_planned", result.tours_planned},
+      {"early_rejection",
+       {{"proposals", result.early.proposals},
+        {"tours_skipped", result.early.tours_skipped},
+        {"legs_skipped", result.early.legs_skipped},
+        {"planning_s_saved_estimate", result.early.saved_s_estimate}}},
+      {"refused_legs",
+       {{"legs", result.legs_refused},
+        {"reachability_fills", result.gate_fills},
+        {"reachability_ms", result.gate_ms}}},
       {"cost",
        {{"initial", result.initial.total()}, {"final", result.final.total()}, {"terms", terms}}},
       {"time_s",

@@ -16,8 +16,11 @@ bool same_path(const rs::Path& a, const rs::Path& b) {
 
 }  // namespace
 
-LegMeasures::LegMeasures(const geometry::CSpace& cspace, double radius)
-    : cspace_(&cspace), radius_(radius), swept_reach_(cspace.swept_reach()) {
+LegMeasures::LegMeasures(const geometry::CSpace& cspace, double radius, double reference_width)
+    : cspace_(&cspace),
+      radius_(radius),
+      reference_width_(reference_width),
+      swept_reach_(cspace.swept_reach()) {
   for (int i = 0; i < cspace.object_count(); ++i) object_reach_.push_back(cspace.object_reach(i));
 }
 
@@ -92,7 +95,7 @@ void LegMeasures::measure(Leg& leg, double step) {
   std::vector<geometry::Clearance> clearances;
   clearances.reserve(entry->nearest.size());
   for (const auto& n : entry->nearest) clearances.push_back(n.clearance);
-  entry->metrics = metrics_of(entry->waypoints, leg.path.length(), clearances);
+  entry->metrics = metrics_of(entry->waypoints, leg.path.length(), clearances, reference_width_);
   entry->layout = std::move(now);
   leg.waypoints = entry->waypoints;
   leg.metrics = entry->metrics;

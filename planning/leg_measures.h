@@ -44,7 +44,8 @@ namespace hrs::planning {
 class LegMeasures {
  public:
   //! Reads `cspace` at each call (its layout may change between calls).
-  LegMeasures(const geometry::CSpace& cspace, double radius);
+  //! `reference_width`: the scene's weights.clearance_width.
+  LegMeasures(const geometry::CSpace& cspace, double radius, double reference_width);
 
   //! Fills leg.waypoints (every `step` metres) and leg.metrics, equal to
   //! waypoints_of() and measure() in the current layout.
@@ -89,6 +90,7 @@ class LegMeasures {
 
   const geometry::CSpace* cspace_;
   double radius_;
+  double reference_width_;
   double swept_reach_;                //!< CSpace::swept_reach()
   std::vector<double> object_reach_;  //!< CSpace::object_reach() per object
   mutable std::mutex mutex_;          //!< guards the maps and counters_

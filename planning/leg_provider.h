@@ -66,10 +66,12 @@ class LegProvider {
   //! comes back with planned = true and found = false. `next`: the legs the
   //! tour asks for next, in order, should this one fail (the remaining
   //! candidates of its search level); a provider may work on them while it
-  //! waits, never changing any outcome.
+  //! waits, never changing any outcome. `tour`: the caller's index of the
+  //! asking tour (TourHooks::tour), so that a provider can keep only the
+  //! work of the tours its caller keeps (ReusePlanner::end_iteration).
   virtual LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to,
                              std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
-                             std::span<const LegRequest> next = {}) = 0;
+                             std::span<const LegRequest> next = {}, int tour = 0) = 0;
 };
 
 }  // namespace hrs::planning

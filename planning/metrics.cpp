@@ -20,15 +20,16 @@ double rotation_of(const std::vector<geometry::Pose2>& waypoints) {
 }
 
 PathMetrics measure(const geometry::CSpace& cspace, const std::vector<geometry::Pose2>& waypoints,
-                    double length) {
+                    double length, double reference_width) {
   std::vector<geometry::Clearance> clearances;
   clearances.reserve(waypoints.size());
   for (const geometry::Pose2& p : waypoints) clearances.push_back(cspace.clearance(p));
-  return metrics_of(waypoints, length, clearances);
+  return metrics_of(waypoints, length, clearances, reference_width);
 }
 
 PathMetrics metrics_of(const std::vector<geometry::Pose2>& waypoints, double length,
-                       const std::vector<geometry::Clearance>& clearances) {
+                       const std::vector<geometry::Clearance>& clearances,
+                       double reference_width) {
   PathMetrics m;
   m.length = length;
   m.rotation = rotation_of(waypoints);
@@ -38,7 +39,7 @@ PathMetrics metrics_of(const std::vector<geometry::Pose2>& waypoints, double len
   for (const geometry::Clearance& c : clearances) {
     const double w = c.left + c.right;
     sum += w;
-    deficit += std::max(0.0, kReferenceWidth - w);
+    deficit += std::max(0.0, reference_width - w);
     narrowest = std::min(narrowest, w);
   }
   m.clearance = sum / static_cast<double>(waypoints.size());

@@ -42,11 +42,13 @@ void add_stats(LegStats& into, const LegStats& more) {
 struct ReusePlanner::Slot {
   std::mutex mutex;
   Pose2 from, to;
-  //! A tour asked for this leg (else only `speculate` computed it: no trace).
-  bool requested = false;
-  //! A tour asked for it with planning allowed: only then does stage B's
-  //! outcome count (else stage B ran for `speculate` alone).
-  bool plan_requested = false;
+  //! The lowest index of a tour that asked for this leg (none: only
+  //! `speculate` computed it, no trace).
+  int first_request = kNoTour;
+  //! The same among tours that asked with planning allowed: only then does
+  //! stage B's outcome count (else stage B ran for `speculate` alone).
+  int first_plan_request = kNoTour;
+  static constexpr int kNoTour = std::numeric_limits<int>::max();
   bool speculative = false;  //!< computed by speculate_one()
   //! Its holder is validating or planning (not merely reading a result).
   std::atomic<bool> working{false};
@@ -87,7 +89,8 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
     if (options_.samples) sampler_ = std::make_unique<DecompositionSampler>(*decomposition_, scene);
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
   }
-  if (options_.metrics) measures_ = std::make_unique<LegMeasures>(cspace, radius_);
+  if (options_.metrics)
+    measures_ = std::make_unique<LegMeasures>(cspace, radius_, scene.weights.clearance_width);
   // PathDatabase::still_free(): a point of a stored path lies within half a trace step of
   // the trace; straight motions are tested as the segment itself and each
   // arc, cut at slice borders, as triangles within one slice's arc length
@@ -114,8 +117,8 @@ void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
   iteration_seed_ = iteration_seed;
   proofs_.invalidate();
   slots_.clear();
-  leg_requests_ = 0;
-  unshared_ = {};
+  leg_requests_.clear();
+  unshared_.clear();
 }
 
 LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from, const Pose2& to,
@@ -217,6 +220,10 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     slot.failure_reused = true;
     return out;  // the recorded RRT run would repeat query for query
   }
+  if (gate_ && gate_->refuses(from, to)) {
+    slot.proven = true;
+    return out;  // no motion joins the ends: no RRT could find one
+  }
   if (options_.paths && options_.repair) {
     if (std::optional<LegOutcome> r = repair(key, from, to, seed, planner)) {
       if (r->found) {
@@ -276,7 +283,8 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   return out;
 }
 
-ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request, bool may_plan) {
+ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request, bool may_plan,
+                                           int tour) {
   std::lock_guard lock(mutex_);
   auto& owned = slots_[r.key];
   if (!owned) {
@@ -285,9 +293,9 @@ ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request, bo
     owned->to = r.to;
   }
   if (request) {
-    ++leg_requests_;
-    owned->requested = true;
-    owned->plan_requested = owned->plan_requested || may_plan;
+    ++leg_requests_[tour];
+    owned->first_request = std::min(owned->first_request, tour);
+    if (may_plan) owned->first_plan_request = std::min(owned->first_plan_request, tour);
   }
   return owned.get();
 }
@@ -345,7 +353,7 @@ rs::Path ReusePlanner::shortened(const Pose2& from, const rs::Path& path, LegSta
 
 LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pose2& to,
                                  std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
-                                 std::span<const LegRequest> next) {
+                                 std::span<const LegRequest> next, int tour) {
   if (!options_.any()) {
     // The baseline exactly: a fresh tree and the tour's own leg seed.
     LegOutcome out;
@@ -358,16 +366,17 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     // Every tour plans its own legs here: counted per request (the sums
     // do not depend on the order).
     std::lock_guard lock(mutex_);
-    ++unshared_.leg_requests;
+    ReuseCounters& mine = unshared_[tour];
+    ++mine.leg_requests;
     if (r.found) {
-      ++unshared_.legs_planned;
-      ++unshared_.rrt_iterations[r.stats.iterations];
+      ++mine.legs_planned;
+      ++mine.rrt_iterations[r.stats.iterations];
     } else {
-      ++unshared_.legs_failed;
+      ++mine.legs_failed;
     }
     return out;
   }
-  Slot* slot = slot_for({key, from, to}, true, may_plan);
+  Slot* slot = slot_for({key, from, to}, true, may_plan, tour);
   if (options_.paths) {
     // Compute once per key and iteration; tours needing the same leg wait,
     // or with `speculate` first plan their next candidate.
@@ -405,20 +414,23 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
   return out;
 }
 
-ReuseCounters ReusePlanner::end_iteration() {
-  ReuseCounters c = std::move(unshared_);
-  unshared_ = {};
-  c.leg_requests += leg_requests_;
+ReuseCounters ReusePlanner::end_iteration(int kept_tours) {
+  ReuseCounters c;
+  for (const auto& [tour, counts] : unshared_)
+    if (tour < kept_tours) c += counts;
+  for (const auto& [tour, n] : leg_requests_)
+    if (tour < kept_tours) c.leg_requests += n;
   std::set<RootKey> roots;
   std::vector<Pose2> layout;  // the iteration's object poses, for the stores
   for (int i = 0; i < cspace_->object_count(); ++i) layout.push_back(cspace_->object_pose(i));
   for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
-    if (!slot->requested) continue;   // computed by `speculate` only: no trace
+    // Computed by `speculate` only, or only for tours the caller dropped: no trace.
+    if (slot->first_request >= kept_tours) continue;
     // Stage B counts only when a tour asked for the leg with planning
     // allowed: a tour capped by max_leg_plans gets "not found" whether or
     // not `speculate` planned the leg meanwhile, so the stores must not
     // depend on it either.
-    const bool planned = slot->planned_done && slot->plan_requested;
+    const bool planned = slot->planned_done && slot->first_plan_request < kept_tours;
     if (slot->database.rejected) ++c.legs_rejected;
     const LegOutcome* outcome = nullptr;
     if (slot->database_done && slot->database.found) {
@@ -471,7 +483,8 @@ ReuseCounters ReusePlanner::end_iteration() {
     }
   }
   slots_.clear();
-  leg_requests_ = 0;
+  leg_requests_.clear();
+  unshared_.clear();
   totals_ += c;
   return c;
 }

@@ -42,6 +42,7 @@
 #include "planning/path_database.h"
 #include "planning/path_shortening.h"
 #include "planning/proof_oracle.h"
+#include "planning/reach_gate.h"
 #include "planning/reuse_counters.h"
 #include "planning/reuse_options.h"
 #include "planning/rrt.h"
@@ -67,11 +68,18 @@ class ReusePlanner final : public LegProvider {
   void begin_iteration(std::uint64_t iteration_seed);
   //! Merges the iteration's outcomes into the database and the tree store in
   //! key order and returns the iteration's counters (also added to totals()).
-  ReuseCounters end_iteration();
+  //! Only legs asked for by tours with index < `kept_tours` count: a caller
+  //! that stopped some tours early (a rejected layout) keeps the stores
+  //! independent of how far the stopped tours got.
+  ReuseCounters end_iteration(int kept_tours = kAllTours);
+  static constexpr int kAllTours = 1 << 30;
 
   LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t tour_seed,
-                     bool may_plan, LegPlanner& planner,
-                     std::span<const LegRequest> next = {}) override;
+                     bool may_plan, LegPlanner& planner, std::span<const LegRequest> next = {},
+                     int tour = 0) override;
+  //! Refuses, before any RRT, the legs `gate` proves impossible (null: none).
+  //! They count as failed fresh plans and as legs_proven.
+  void set_gate(const ReachGate* gate) { gate_ = gate; }
 
   //! Legs planned by `speculate` and how many of them a tour then asked for
   //! in the same iteration (depends on thread timing: not for reports).
@@ -102,7 +110,7 @@ class ReusePlanner final : public LegProvider {
   //! The iteration's slot of `r.key`, made on first use; `request`: a tour
   //! asks for it (counted, and kept by end_iteration()), `may_plan`: with
   //! planning allowed (then stage B's outcome counts too).
-  Slot* slot_for(const LegRequest& r, bool request, bool may_plan = false);
+  Slot* slot_for(const LegRequest& r, bool request, bool may_plan = false, int tour = 0);
   //! Stage A, then (when `may_plan`) stage B, each once per slot; the caller
   //! holds slot.mutex. The outcome a tour gets.
   LegOutcome settle(const LegKey& key, Slot& slot, bool may_plan, LegPlanner& planner) const;
@@ -132,8 +140,9 @@ class ReusePlanner final : public LegProvider {
   std::mutex mutex_;  //!< guards slots_, leg_requests_ and the slots' `requested`
   std::atomic<std::uint64_t> speculated_{0}, speculated_used_{0};
   std::map<LegKey, std::unique_ptr<Slot>> slots_;
-  std::uint64_t leg_requests_ = 0;
-  ReuseCounters unshared_;  //!< all techniques off: legs counted per request
+  std::map<int, std::uint64_t> leg_requests_;  //!< per tour
+  std::map<int, ReuseCounters> unshared_;      //!< all techniques off: per request, per tour
+  const ReachGate* gate_ = nullptr;
   ReuseCounters totals_;
 };
 

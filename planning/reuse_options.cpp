@@ -74,7 +74,7 @@ ReuseOptions ReuseOptions::parse(std::string_view list) {
       for (const Parameter& x : parameters()) known.append(", ").append(x.technique).append("=N");
       throw InputError("--reuse: unknown technique '" + std::string(item) +
                        "' (all, none, or a comma list of all" + known +
-                       "; -NAME turns one off, e.g. all,-budget)");
+                       "; -NAME turns one off, e.g. all,-trees)");
     }
     start = end + 1;
   }

@@ -34,7 +34,9 @@ struct ReuseOptions {
   //! next pose pair: this trades a few hard legs for the time every failing
   //! leg used to cost, which the final costs must absorb (measured in
   //! docs/BENCHMARKS.md). Repairs keep their own, smaller budget.
-  bool budget = true;
+  //! Opt-in, not in "all": it cost tours found in hard rooms (a design
+  //! must not be worse with the proposed planner; docs/planner.md).
+  bool budget = false;
   //! Beyond the paper: the clearance metrics and the re-certification of a
   //! found leg are kept (planning/leg_measures.h) and brought up to date
   //! instead of recomputed, by the tours that share the leg and in later
@@ -47,7 +49,8 @@ struct ReuseOptions {
   //! fail layout after layout), and a leg that is found at all is nearly
   //! always found in few iterations (Fig. "rrt-it"). A heuristic: a leg that
   //! needs more than its reduced budget fails (measured in docs/BENCHMARKS.md).
-  bool backoff = true;
+  //! Opt-in, not in "all", for the same reason as `budget`.
+  bool backoff = false;
   //! Beyond the paper; changes the work, never an outcome: a tour that asks
   //! for a leg another tour is planning at that moment (tours of an
   //! iteration share legs, computed once) plans, instead of waiting, the

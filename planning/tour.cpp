@@ -10,6 +10,7 @@
 #include "geometry/random.h"
 #include "planning/leg_measures.h"
 #include "planning/path_ops.h"
+#include "planning/reach_gate.h"
 
 namespace hrs::planning {
 
@@ -77,11 +78,12 @@ Tour TourPlanner::plan(const std::vector<std::string>& sequence) {
     } else {
       for (std::size_t i = 0; i < stops[0].goals.size() && !tour.found; ++i) {
         tour.found = search(stops, 0, static_cast<int>(i), legs, tour);
-        if (tour.stats.capped) break;
+        if (tour.stats.capped || tour.stats.cancelled) break;
       }
     }
   }
 
+  if (tour.stats.cancelled) tour.found = false;
   if (tour.found) {
     std::vector<PathMetrics> parts;
     for (Leg& leg : legs) {
@@ -89,7 +91,8 @@ Tour TourPlanner::plan(const std::vector<std::string>& sequence) {
         hooks_.measures->measure(leg, options_.waypoint_step);
       } else {
         leg.waypoints = waypoints_of(leg.from, leg.path, options_.waypoint_step);
-        leg.metrics = measure(*cspace_, leg.waypoints, leg.path.length());
+        leg.metrics = measure(*cspace_, leg.waypoints, leg.path.length(),
+                              scene_->weights.clearance_width);
       }
       parts.push_back(leg.metrics);
     }
@@ -137,13 +140,19 @@ TourPlanner::Fetch TourPlanner::fetch_leg(std::span<const LegRequest> requests, 
   // The outcome from the provider (proposed) or from this tour's own RRT
   // query (baseline); a query past max_leg_plans is not run (capped below).
   const bool may_plan = tour.stats.legs_planned < options_.max_leg_plans;
+  if (hooks_.cancel && hooks_.cancel->load(std::memory_order_relaxed)) {
+    tour.stats.cancelled = true;
+    return Fetch::kCapped;
+  }
   LegOutcome outcome;
   if (hooks_.provider) {
     outcome = hooks_.provider->resolve(r.key, r.from, r.to, seed_, may_plan, planner_,
-                                       requests.subspan(c + 1));
+                                       requests.subspan(c + 1), hooks_.tour);
   } else {
     outcome.planned = true;
-    if (may_plan) {
+    if (may_plan && hooks_.gate && hooks_.gate->refuses(r.from, r.to)) {
+      ++tour.stats.legs_refused;
+    } else if (may_plan) {
       LegResult result = planner_.plan(r.from, r.to, leg_seed(seed_, r.key));
       outcome.found = result.found;
       outcome.path = std::move(result.path);
@@ -193,7 +202,7 @@ bool TourPlanner::search(std::vector<Stop>& stops, std::size_t level, int pose,
     if (search(stops, level + 1, j, legs, tour)) return true;
     legs.pop_back();
     ++tour.stats.backtracks;
-    if (tour.stats.capped) return false;
+    if (tour.stats.capped || tour.stats.cancelled) return false;
   }
   here.dead[pose] = 1;
   return false;

@@ -23,6 +23,7 @@
 // leg's RRT seed is derived from the tour seed and the leg's key, not from
 // the order legs are tried.
 
+#include <atomic>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -56,6 +57,7 @@ struct TourOptions {
 };
 
 class LegMeasures;
+class ReachGate;
 
 struct TourHooks {
   PlannerHooks planner;  //!< sampler / steering of the leg planner
@@ -65,6 +67,17 @@ struct TourHooks {
   //! Non-null: found legs are measured through it (same results, work kept
   //! across tours and layouts: planning/leg_measures.h); null: afresh.
   LegMeasures* measures = nullptr;
+  //! Non-null: a leg the gate proves impossible is not planned; it counts
+  //! as a planned leg that failed (legs_planned, legs_failed, max_leg_plans),
+  //! exactly as the RRT query it replaces, so tours are the same with and
+  //! without the gate. Used for the baseline's own legs; the proposed
+  //! planner asks its gate inside the provider.
+  const ReachGate* gate = nullptr;
+  //! Non-null and set: the tour stops before its next leg and is not found
+  //! (the caller no longer needs it; see optimize/design.cpp).
+  const std::atomic<bool>* cancel = nullptr;
+  //! The caller's index of this tour, passed to the provider.
+  int tour = 0;
 };
 
 struct Leg {
@@ -84,9 +97,11 @@ struct TourStats {
   int legs_reused = 0;    //!< paths taken from the provider's database
   int legs_repaired = 0;  //!< stored paths repaired by the provider (also in legs_planned)
   int legs_rejected = 0;  //!< stored paths invalid in the current layout
+  int legs_refused = 0;   //!< legs the gate proved impossible (also in legs_failed)
   int backtracks = 0;     //!< returns to an earlier leg
   int depth = 0;          //!< most legs joined at once (= sequence size − 1 when found)
   bool capped = false;    //!< max_leg_plans was reached
+  bool cancelled = false; //!< stopped through TourHooks::cancel
   std::uint64_t rrt_iterations = 0;
   std::uint64_t collision_checks = 0;
   double time_ms = 0.0;

@@ -44,7 +44,7 @@ TEST(Annealer, EmpiricalAcceptanceRateMatchesExpMinusDeltaOverT) {
     double current = 0.0;
     AnnealCallbacks cb;
     cb.move_valid = [](const std::vector<Pose2>&, int) { return true; };
-    cb.cost = [&](const std::vector<Pose2>&, const Move& m) {
+    cb.cost = [&](const std::vector<Pose2>&, const Move& m, const Acceptance&) {
       return m.object < 0 ? 0.0 : current + delta;
     };
     cb.progress = [&](const TraceEntry& e) { current = e.current_cost; };
@@ -71,7 +71,7 @@ TEST(Annealer, FindsTheKnownOptimumOfAToyCostAndNeverMovesFixedObjects) {
     if (q.x < 0 || q.x > 4 || q.y < 0 || q.y > 4) return false;
     return std::hypot(p[0].x - p[1].x, p[0].y - p[1].y) >= 0.5;
   };
-  cb.cost = [&](const std::vector<Pose2>& p, const Move&) {
+  cb.cost = [&](const std::vector<Pose2>& p, const Move&, const Acceptance&) {
     EXPECT_EQ(p[2], fixed);
     double c = 0.0;
     for (int i = 0; i < 2; ++i) {
@@ -103,7 +103,7 @@ TEST(Annealer, InvalidMovesAreNeverEvaluated) {
   int evaluations = 0;
   AnnealCallbacks cb;
   cb.move_valid = [](const std::vector<Pose2>&, int) { return false; };
-  cb.cost = [&](const std::vector<Pose2>&, const Move&) { return ++evaluations, 1.0; };
+  cb.cost = [&](const std::vector<Pose2>&, const Move&, const Acceptance&) { return ++evaluations, 1.0; };
   AnnealOptions o;
   o.iterations = 100;
   std::mt19937_64 rng(3);
@@ -119,7 +119,7 @@ TEST(Annealer, RejectedMovesAreUndoneAndReported) {
   int rejected = 0;
   AnnealCallbacks cb;
   cb.move_valid = [](const std::vector<Pose2>&, int) { return true; };
-  cb.cost = [](const std::vector<Pose2>&, const Move& m) { return m.object < 0 ? 0.0 : 1e9; };
+  cb.cost = [](const std::vector<Pose2>&, const Move& m, const Acceptance&) { return m.object < 0 ? 0.0 : 1e9; };
   cb.rejected = [&](const Move& m) {
     ++rejected;
     EXPECT_NE(m.from, m.to);
@@ -137,7 +137,7 @@ TEST(Annealer, RejectedMovesAreUndoneAndReported) {
 TEST(Annealer, BestIsTheMinimumOverValidAcceptedLayoutsAndRunsAreSeeded) {
   AnnealCallbacks cb;
   cb.move_valid = [](const std::vector<Pose2>& p, int) { return std::abs(p[0].x) < 3; };
-  cb.cost = [](const std::vector<Pose2>& p, const Move&) {
+  cb.cost = [](const std::vector<Pose2>& p, const Move&, const Acceptance&) {
     return std::sin(3 * p[0].x) + 0.1 * p[0].y * p[0].y;
   };
   // Layouts with y < 0 count as not fully valid: never the best.
@@ -170,12 +170,12 @@ TEST(Annealer, JumpsLandInTheBoundsAndOnlyWhileHot) {
   int early = 0, late = 0, without = 0;
   AnnealCallbacks cb;
   cb.move_valid = [](const std::vector<Pose2>&, int) { return true; };
-  cb.cost = [](const std::vector<Pose2>&, const Move&) { return 0.0; };
+  cb.cost = [](const std::vector<Pose2>&, const Move&, const Acceptance&) { return 0.0; };
   int k = 0;
   cb.rejected = [](const Move&) {};
   cb.progress = [&](const TraceEntry&) { ++k; };
   auto watch = cb;
-  watch.cost = [&](const std::vector<Pose2>& p, const Move& m) {
+  watch.cost = [&](const std::vector<Pose2>& p, const Move& m, const Acceptance&) {
     if (m.jump) {
       EXPECT_FALSE(m.rotation);
       EXPECT_GE(p[0].x, -1.0);
@@ -191,7 +191,7 @@ TEST(Annealer, JumpsLandInTheBoundsAndOnlyWhileHot) {
   EXPECT_GT(early, 50);
   EXPECT_LT(late, early);
   o.bounds.reset();
-  watch.cost = [&](const std::vector<Pose2>&, const Move& m) { return without += m.jump, 0.0; };
+  watch.cost = [&](const std::vector<Pose2>&, const Move& m, const Acceptance&) { return without += m.jump, 0.0; };
   std::mt19937_64 rng2(5);
   anneal({{10, 10, 0}}, {true}, o, watch, rng2);
   EXPECT_EQ(without, 0);

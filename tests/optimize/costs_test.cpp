@@ -175,7 +175,7 @@ TEST(Costs, UnreachableTourFromThePlannerGetsThePenalty) {
 // Two long boxes leave a straight corridor of width w along x; the chair drives
 // its centre line. The clearance term must fall as w grows and vanish past the
 // reference width.
-double corridor_clearance_cost(double w) {
+double corridor_clearance_cost(double w, double reference = planning::kReferenceWidth) {
   const double y0 = 2.0;
   const std::string lower = std::to_string(y0 - w / 2 - 0.5);
   const std::string upper = std::to_string(y0 + w / 2 + 0.5);
@@ -189,7 +189,8 @@ double corridor_clearance_cost(double w) {
                                             upper + R"(, -1.5707963267948966]}],
     "activity": {"transitions": {"door": {"lo": 1.0}, "lo": {"hi": 1.0}, "hi": {"lo": 1.0}},
                  "visits": 1},
-    "weights": {"path": [0, 0, 1], "interior": [0, 0]}})",
+    "weights": {"path": [0, 0, 1], "interior": [0, 0], "clearance_width": )" +
+                                            std::to_string(reference) + R"(}})",
                                         "corridor");
   const CostModel model(s, scene_sequences(s));
   geometry::CSpace cspace(s);
@@ -202,14 +203,14 @@ double corridor_clearance_cost(double w) {
   tour.sequence = model.sequences()[0].nodes;
   tour.found = true;
   planning::Leg leg;
-  leg.metrics = planning::measure(cspace, waypoints, path.length());
+  leg.metrics = planning::measure(cspace, waypoints, path.length(), s.weights.clearance_width);
   tour.legs.push_back(leg);
   return model.evaluate({s.objects[0].pose, s.objects[1].pose}, {tour}).path_clearance;
 }
 
 TEST(Costs, AWiderCorridorLowersTheClearanceCost) {
   double previous = std::numeric_limits<double>::infinity();
-  for (double w : {0.70, 0.75, 0.80, 0.85, 0.90}) {
+  for (double w : {0.70, 0.80, 0.90, 1.00, 1.10, 1.20, 1.30, 1.40, 1.50}) {
     const double c = corridor_clearance_cost(w);
     EXPECT_LT(c, previous) << "width " << w;
     EXPECT_GT(c, 0.0);
@@ -217,8 +218,19 @@ TEST(Costs, AWiderCorridorLowersTheClearanceCost) {
     EXPECT_LE(c, planning::kReferenceWidth);
     previous = c;
   }
-  EXPECT_NEAR(corridor_clearance_cost(0.8), planning::kReferenceWidth - 0.8, 0.02);
-  EXPECT_EQ(corridor_clearance_cost(1.0), 0.0);
+  EXPECT_NEAR(corridor_clearance_cost(1.2), planning::kReferenceWidth - 1.2, 0.02);
+  EXPECT_EQ(corridor_clearance_cost(1.6), 0.0);
+}
+
+// weights.clearance_width moves the width where the term vanishes: with the
+// paper's 0.915 m a 1 m corridor costs nothing, with 1.525 m (the default) it
+// costs 0.525 per metre of path.
+TEST(Costs, TheClearanceWidthIsTheScenesParameter) {
+  EXPECT_DOUBLE_EQ(planning::kReferenceWidth, 1.525);
+  EXPECT_EQ(corridor_clearance_cost(1.0, 0.915), 0.0);
+  EXPECT_NEAR(corridor_clearance_cost(0.8, 0.915), 0.915 - 0.8, 0.02);
+  EXPECT_NEAR(corridor_clearance_cost(1.0, 1.525), 0.525, 0.02);
+  EXPECT_NEAR(corridor_clearance_cost(1.0, 2.0), 1.0, 0.02);
 }
 
 }  // namespace

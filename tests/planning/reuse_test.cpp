@@ -61,14 +61,16 @@ TEST(ReuseOptions, ParsesTechniqueLists) {
   EXPECT_EQ(o.names(), "paths,trees");
   EXPECT_EQ(ReuseOptions::none().names(), "none");
   EXPECT_THROW(ReuseOptions::parse("paths,bogus"), InputError);
-  // "all" is every default technique (budget included, proofs not); -name
-  // turns one off, left to right.
+  // "all" is every default technique (budget, backoff and proofs are
+  // opt-in); -name turns one off, left to right.
   EXPECT_EQ(ReuseOptions::parse("all").names(),
-            "samples,steering,paths,trees,failures,shortcuts,budget,metrics,backoff,speculate");
-  EXPECT_EQ(ReuseOptions::parse("all,-budget").names(),
-            "samples,steering,paths,trees,failures,shortcuts,metrics,backoff,speculate");
+            "samples,steering,paths,trees,failures,shortcuts,metrics,speculate");
+  EXPECT_EQ(ReuseOptions::parse("all,-trees").names(),
+            "samples,steering,paths,failures,shortcuts,metrics,speculate");
+  EXPECT_EQ(ReuseOptions::parse("all,budget").names(),
+            "samples,steering,paths,trees,failures,shortcuts,budget,metrics,speculate");
   EXPECT_EQ(ReuseOptions::parse("metrics").names(), "metrics");
-  EXPECT_EQ(ReuseOptions::parse("all,-budget,budget").names(), ReuseOptions::parse("all").names());
+  EXPECT_EQ(ReuseOptions::parse("all,-trees,trees").names(), ReuseOptions::parse("all").names());
   EXPECT_EQ(ReuseOptions::parse("budget").names(), "budget");
   EXPECT_TRUE(ReuseOptions::parse("budget").any());
   EXPECT_FALSE(ReuseOptions::parse("budget,-budget").any());

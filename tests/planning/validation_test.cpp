@@ -107,7 +107,7 @@ TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
     geometry::Scene scene = geometry::load_scene(file);
     geometry::CSpace cspace(scene);
     const double r = scene.wheelchair.turning_radius;
-    LegMeasures measures(cspace, r);
+    LegMeasures measures(cspace, r, scene.weights.clearance_width);
     MotionValidator validator(cspace, r);
     std::mt19937_64 rng(31);
     const int n = static_cast<int>(scene.objects.size());
@@ -145,7 +145,7 @@ TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
         Leg& leg = legs[rng() % legs.size()];
         measures.measure(leg, kWaypointStep);
         const std::vector<Pose2> waypoints = waypoints_of(leg.from, leg.path, kWaypointStep);
-        const PathMetrics fresh = measure(cspace, waypoints, leg.path.length());
+        const PathMetrics fresh = measure(cspace, waypoints, leg.path.length(), scene.weights.clearance_width);
         ASSERT_EQ(leg.waypoints, waypoints) << file << " step " << step;
         ASSERT_EQ(leg.metrics.length, fresh.length);
         ASSERT_EQ(leg.metrics.rotation, fresh.rotation);
