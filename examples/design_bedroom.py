@@ -29,6 +29,7 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 
 
 def main(argv=None):
+    """Runs the design, saves its files and the plot; returns the exit status."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--scene", default=str(ROOT / "scenes" / "bedroom.json"))
     parser.add_argument("--iterations", type=int, default=200)
@@ -41,6 +42,7 @@ def main(argv=None):
     print(f"{scene.name}: {len(scene.objects)} objects, {args.iterations} iterations")
 
     def progress(step):
+        """Prints the best cost every 25 iterations."""
         if step["iteration"] % 25 == 0 or step["iteration"] == step["iterations"]:
             print(f"  iteration {step['iteration']:4d}/{step['iterations']}  best cost {step['best']:.3f}")
 

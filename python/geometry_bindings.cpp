@@ -7,7 +7,9 @@
 #include <charconv>
 #include <cmath>
 #include <memory>
+#include <mutex>
 #include <optional>
+#include <shared_mutex>
 #include <string>
 #include <vector>
 
@@ -52,10 +54,13 @@ py::ssize_t check_poses(const PoseArray& poses, bool& single) {
   return n;
 }
 
-//! A C-space with the ids of its objects (for move_object by id).
+//! A C-space with the ids of its objects (for move_object by id). Queries
+//! run without the GIL, so Python threads may query at once; `mutex` keeps
+//! move_object from changing the pieces under a running query.
 struct PyCSpace {
   std::unique_ptr<geometry::CSpace> cspace;
   std::vector<std::string> ids;
+  std::unique_ptr<std::shared_mutex> mutex = std::make_unique<std::shared_mutex>();
 
   int index_of(const py::object& key) const {
     if (py::isinstance<py::str>(key)) {
@@ -131,6 +136,7 @@ void bind_geometry(py::module_& m) {
             const double* d = poses.data();
             {
               py::gil_scoped_release release;
+              const std::shared_lock lock(*c.mutex);
               const geometry::CSpace& cs = *c.cspace;
               for (py::ssize_t i = 0; i < n; ++i)
                 o[i] = cs.is_free({d[3 * i], d[3 * i + 1], d[3 * i + 2]});
@@ -152,6 +158,7 @@ void bind_geometry(py::module_& m) {
             const double* d = poses.data();
             {
               py::gil_scoped_release release;
+              const std::shared_lock lock(*c.mutex);
               const geometry::CSpace& cs = *c.cspace;
               for (py::ssize_t i = 0; i < n; ++i) {
                 const geometry::Clearance cl = cs.clearance({d[3 * i], d[3 * i + 1], d[3 * i + 2]});
@@ -171,6 +178,8 @@ void bind_geometry(py::module_& m) {
           [](PyCSpace& c, const py::object& key, const py::object& pose) {
             const int i = c.index_of(key);
             const geometry::Pose2 p = to_pose(pose, "pose");
+            py::gil_scoped_release release;
+            const std::unique_lock lock(*c.mutex);
             c.cspace->move_object(i, p);
           },
           py::arg("object"), py::arg("pose"),
@@ -179,7 +188,14 @@ void bind_geometry(py::module_& m) {
       .def(
           "object_pose",
           [](const PyCSpace& c, const py::object& key) {
-            return pose_tuple(c.cspace->object_pose(c.index_of(key)));
+            const int i = c.index_of(key);
+            geometry::Pose2 p;
+            {
+              py::gil_scoped_release release;
+              const std::shared_lock lock(*c.mutex);
+              p = c.cspace->object_pose(i);
+            }
+            return pose_tuple(p);
           },
           py::arg("object"), "The pose (x, y, theta) of one object (by id or index).")
       .def_property_readonly(

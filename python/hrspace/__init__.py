@@ -10,6 +10,7 @@ tours and whole layout designs, computed by the same C++ code as the
 Bad input raises ``ValueError`` with the command line's one-line message.
 """
 
-from ._core import CSpace, Design, Object, Scene, design, plan, rs, tour
+from . import rs
+from ._core import CSpace, Design, Object, Scene, design, plan, tour
 
 __all__ = ["CSpace", "Design", "Object", "Scene", "design", "plan", "rs", "tour"]
