@@ -60,8 +60,8 @@ def main(argv=None):
     fig, (trace_ax, room_ax) = plt.subplots(1, 2, figsize=(11, 4.5))
     trace = result.report["trace"]
     iterations = [t["iteration"] for t in trace]
-    trace_ax.plot(iterations, [t["current"] for t in trace], lw=0.8, label="current")
-    trace_ax.plot(iterations, [t["best"] for t in trace], lw=1.5, label="best")
+    trace_ax.plot(iterations, [t["best"] for t in trace], lw=2.5, color="tab:orange", label="best")
+    trace_ax.plot(iterations, [t["current"] for t in trace], lw=0.8, color="tab:blue", label="current")
     trace_ax.set(xlabel="iteration", ylabel="cost", title="annealing")
     trace_ax.legend()
 
