@@ -5,10 +5,12 @@
 #   2. configures tests/consumer/ against that prefix only (find_package(hrspace
 #      CONFIG)), builds it with ccache into WORK/build, runs it (one leg);
 #   3. runs the installed command and imports the installed Python module.
-# Usage: consumer_test.sh SOURCE_DIR BUILD_DIR WORK_DIR [PYTHON|none]
-# (none: hrspace was built without its Python module)
+# Usage: consumer_test.sh SOURCE_DIR BUILD_DIR WORK_DIR [PYTHON|none] [CMAKE_ARG...]
+# (none: hrspace was built without its Python module; the CMAKE_ARGs, such as
+# the build's compiler and sanitizer flags, go to the consumer's configure)
 set -euo pipefail
 src="$1" build="$2" work="$3" python="${4:-/usr/bin/python3}"
+shift $(($# < 4 ? $# : 4))
 rm -rf "$work"
 mkdir -p "$work"
 prefix="$work/prefix"
@@ -27,7 +29,7 @@ if command -v ninja >/dev/null; then generator=(-G Ninja); fi
 exec 9>"/tmp/hrspace-build.lock"
 flock -w 1800 9
 cmake -S "$src/tests/consumer" -B "$work/build" "${generator[@]}" "${launcher[@]}" \
-  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log" 2>&1 ||
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" "$@" >"$work/configure.log" 2>&1 ||
   { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/build" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
 flock -u 9
