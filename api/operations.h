@@ -71,7 +71,9 @@ std::string plan_leg_json(const geometry::Scene& scene, const geometry::Pose2& f
 std::string plan_tour_json(const geometry::Scene& scene, const std::vector<std::string>& sequence,
                            std::uint64_t seed, const std::optional<planning::ReuseOptions>& reuse);
 
-//! The options of one `hrspace design` run.
+//! The options of one design run with the command's defaults (the fields
+//! cli/cmd_optimize.cpp sets from --seed, --iterations, --threads, --planner
+//! and --reuse); python_design_test checks that both give the same files.
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
                                        const std::optional<planning::ReuseOptions>& reuse);
 
