@@ -8,6 +8,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "api/operations.h"
 #include "geometry/error.h"
 
 namespace hrs::cli {
@@ -187,23 +188,8 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& text,
 
 std::optional<planning::ReuseOptions> planner_option(const Args& args, const std::string& allowed,
                                                      const std::string& fallback) {
-  const std::string planner = args.get_or("planner", "baseline");
-  if (planner != "baseline" && planner != "proposed")
-    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
-  if (args.get("reuse") && planner != "proposed")
-    throw InputError("--reuse needs --planner proposed");
-  if (planner == "baseline") return std::nullopt;
-  const std::string list = args.get_or("reuse", fallback);
-  planning::ReuseOptions o = planning::ReuseOptions::parse(list);
-  const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
-  planning::ReuseOptions extra = planning::ReuseOptions::none();
-  for (const auto& t : planning::ReuseOptions::techniques()) extra.*t.on = o.*t.on && !(ok.*t.on);
-  if (extra.any())
-    throw InputError("--reuse: '" + list + "': " + extra.names() +
-                     " would do nothing here; this command takes " + allowed +
-                     " (the others reuse work across the layouts of a design: see hrspace "
-                     "design --planner proposed)");
-  return o;
+  return api::choose_planner(args.get_or("planner", "baseline"), args.get("reuse"),
+                             {allowed.c_str(), fallback.c_str()});
 }
 
 }  // namespace hrs::cli

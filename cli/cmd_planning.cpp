@@ -1,25 +1,17 @@
 // `hrspace plan` and `hrspace tour`: the planning layer on the command line
 // (one leg of the baseline RRT, §III-B; one tour by branch and bound, §III-C).
+// The work itself is in api/operations.h, shared with the Python module.
 
+#include <cstdint>
 #include <iostream>
-#include <memory>
-#include <optional>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "api/operations.h"
 #include "cli/args.h"
 #include "cli/commands.h"
-#include "geometry/cspace.h"
 #include "geometry/error.h"
-#include "geometry/free_grid.h"
-#include "geometry/polygon_ops.h"
 #include "geometry/scene.h"
-#include "planning/reuse.h"
-#include "planning/rrt.h"
-#include "planning/tour.h"
-#include "planning/tour_json.h"
 
 namespace hrs::cli {
 
@@ -30,48 +22,11 @@ geometry::Scene read_scene(const std::string& path) {
   return geometry::load_scene(path);
 }
 
-//! Throws InputError naming `what` when the chair at `pose` is not usable as
-//! a start or goal: outside the room, overlapping an object, or too close to
-//! an obstacle for the conservative C-space to certify it free.
-void require_free(const geometry::Scene& scene, const geometry::CSpace& cspace,
-                  const geometry::Pose2& pose, const std::string& what) {
-  if (cspace.is_free(pose)) return;
-  const double hl = 0.5 * scene.wheelchair.length, hw = 0.5 * scene.wheelchair.width;
-  geometry::Polygon chair;
-  for (geometry::Vec2 v : {geometry::Vec2{hl, hw}, {-hl, hw}, {-hl, -hw}, {hl, -hw}}) {
-    chair.push_back(geometry::to_world(pose, v));
-  }
-  std::ostringstream at;
-  at << what << " pose " << pose.x << "," << pose.y << "," << pose.theta << ": ";
-  if (!geometry::polygon_inside(chair, scene.room.polygon))
-    throw InputError(at.str() + "the wheelchair is outside the room");
-  for (int i = 0; i < cspace.object_count(); ++i) {
-    geometry::Object o = scene.objects[i];
-    o.pose = cspace.object_pose(i);
-    if (geometry::interiors_overlap(chair, geometry::world_footprint(o)))
-      throw InputError(at.str() + "the wheelchair collides with object '" + o.id + "'");
-  }
-  throw InputError(
-      at.str() + "the wheelchair touches or nearly touches a wall or object (not certified free)");
-}
-
 geometry::Pose2 pose_option(const Args& args, const std::string& name) {
   const auto v = args.get(name);
   if (!v) throw InputError("missing --" + name + " x,y,theta (see --help)");
   const std::vector<double> n = parse_numbers(*v, 3, "--" + name);
   return {n[0], n[1], n[2]};
-}
-
-std::vector<std::string> split_ids(const std::string& text) {
-  std::vector<std::string> out;
-  std::stringstream ss(text);
-  std::string id;
-  while (std::getline(ss, id, ',')) {
-    if (id.empty()) throw InputError("--sequence: empty object id in '" + text + "'");
-    out.push_back(id);
-  }
-  if (out.empty()) throw InputError("--sequence: no object ids");
-  return out;
 }
 
 }  // namespace
@@ -100,39 +55,15 @@ int cmd_plan(const Argv& argv) {
   }
   args.expect_positional(1, usage);
   const geometry::Scene scene = read_scene(args.positional()[0]);
-  const geometry::CSpace cspace(scene);
   const geometry::Pose2 from = pose_option(args, "from");
   const geometry::Pose2 to = pose_option(args, "to");
-  require_free(scene, cspace, from, "--from");
-  require_free(scene, cspace, to, "--to");
-  planning::PlannerOptions options;
-  options.max_iterations =
-      static_cast<int>(args.integer("iterations", options.max_iterations, 1, 100000000));
-  options.step_length = args.number("step", options.step_length);
-  if (!(options.step_length > 0.0)) throw InputError("--step: must be > 0");
-  const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  const auto reuse = planner_option(args, "samples,steering", "samples,steering");
-  planning::TourOptions tour;
-  tour.planner = options;
-  std::unique_ptr<planning::ReusePlanner> proposed;
-  if (reuse) proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, tour, *reuse, seed);
-  planning::LegPlanner planner(scene, cspace, options,
-                               proposed ? proposed->hooks().planner : planning::PlannerHooks{});
-  const planning::LegResult result = planner.plan(from, to, seed);
-  // Not found: is there any motion at all? (A certificate, or "not proven".)
-  bool impossible = false;
-  if (!result.found) {
-    try {
-      const geometry::FreeGrid grid(scene);
-      geometry::ReachabilityQuery query;
-      impossible = query.query(grid, from, to, grid.cell_count()) ==
-                   geometry::ReachabilityQuery::Answer::kDisconnected;
-    } catch (const std::invalid_argument&) {
-      // The chair is too small for the grid's cells: nothing is proven.
-    }
-  }
-  std::cout << planning::plan_json(from, to, result, scene.wheelchair.turning_radius, impossible)
-            << "\n";
+  api::LegSettings settings;
+  settings.iterations =
+      static_cast<int>(args.integer("iterations", settings.iterations, 1, 100000000));
+  settings.step = args.number("step", settings.step);
+  settings.seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
+  settings.reuse = planner_option(args, api::kPlanReuse.allowed, api::kPlanReuse.fallback);
+  std::cout << api::plan_leg_json(scene, from, to, settings) << "\n";
   return 0;
 }
 
@@ -160,26 +91,11 @@ int cmd_tour(const Argv& argv) {
   const geometry::Scene scene = read_scene(args.positional()[0]);
   const auto text = args.get("sequence");
   if (!text) throw InputError("missing --sequence door,ID,... (see --help)");
-  const std::vector<std::string> sequence = split_ids(*text);
-  for (const std::string& id : sequence) {
-    if (id != planning::kDoorId && scene.find_object(id) < 0)
-      throw InputError("--sequence: unknown object id '" + id + "'");
-  }
-  const geometry::CSpace cspace(scene);
+  const std::vector<std::string> sequence = api::split_sequence(*text);
+  api::check_sequence(scene, sequence);
   const auto seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 0x7fffffffffffffffL));
-  const auto reuse = planner_option(args, "samples,steering,paths,shortcuts,budget,proofs",
-                                    "samples,steering,paths");
-  std::unique_ptr<planning::ReusePlanner> proposed;
-  if (reuse) {
-    proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, planning::TourOptions{},
-                                                        *reuse, seed);
-    proposed->begin_iteration(seed);
-  }
-  planning::TourPlanner planner(scene, cspace, {}, seed,
-                                proposed ? proposed->hooks() : planning::TourHooks{});
-  const planning::Tour tour = planner.plan(sequence);
-  if (proposed) proposed->end_iteration();
-  std::cout << planning::tour_json(tour) << "\n";
+  const auto reuse = planner_option(args, api::kTourReuse.allowed, api::kTourReuse.fallback);
+  std::cout << api::plan_tour_json(scene, sequence, seed, reuse) << "\n";
   return 0;
 }
 

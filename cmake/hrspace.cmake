@@ -1,5 +1,7 @@
 # Helpers shared by every module, test suite and benchmark.
 
+include(GNUInstallDirs)
+
 set(HRSPACE_WARNINGS -Wall -Wextra -Wpedantic)
 
 # hrspace_add_module(name SOURCES ... [DEPS ...] [PRIVATE_DEPS ...])
@@ -8,7 +10,13 @@ function(hrspace_add_module name)
   cmake_parse_arguments(M "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(hrspace_${name} STATIC ${M_SOURCES})
   add_library(hrspace::${name} ALIAS hrspace_${name})
-  target_include_directories(hrspace_${name} PUBLIC ${PROJECT_SOURCE_DIR})
+  target_include_directories(hrspace_${name} PUBLIC
+    $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/hrspace>)
+  # Position-independent, so that the Python module (a shared object) links
+  # the same static libraries; exported as hrspace::<name> (cmake/install.cmake).
+  set_target_properties(hrspace_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
+  set_property(GLOBAL APPEND PROPERTY HRSPACE_MODULES ${name})
   target_compile_options(hrspace_${name} PRIVATE ${HRSPACE_WARNINGS})
   target_link_libraries(hrspace_${name} PUBLIC ${M_DEPS} PRIVATE ${M_PRIVATE_DEPS})
 endfunction()

@@ -1,0 +1,145 @@
+#include "api/operations.h"
+
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include "geometry/error.h"
+#include "geometry/free_grid.h"
+#include "geometry/polygon_ops.h"
+#include "planning/reuse.h"
+#include "planning/rrt.h"
+#include "planning/tour.h"
+#include "planning/tour_json.h"
+
+namespace hrs::api {
+
+std::optional<planning::ReuseOptions> choose_planner(const std::string& planner,
+                                                     const std::optional<std::string>& reuse,
+                                                     const ReuseRule& rule) {
+  if (planner != "baseline" && planner != "proposed")
+    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
+  if (reuse && planner != "proposed") throw InputError("--reuse needs --planner proposed");
+  if (planner == "baseline") return std::nullopt;
+  const std::string list = reuse.value_or(rule.fallback);
+  const std::string allowed = rule.allowed;
+  planning::ReuseOptions o = planning::ReuseOptions::parse(list);
+  const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
+  planning::ReuseOptions extra = planning::ReuseOptions::none();
+  for (const auto& t : planning::ReuseOptions::techniques()) extra.*t.on = o.*t.on && !(ok.*t.on);
+  if (extra.any())
+    throw InputError("--reuse: '" + list + "': " + extra.names() +
+                     " would do nothing here; this command takes " + allowed +
+                     " (the others reuse work across the layouts of a design: see hrspace "
+                     "design --planner proposed)");
+  return o;
+}
+
+std::string planner_name(const std::optional<planning::ReuseOptions>& reuse) {
+  return reuse ? "proposed" : "baseline";
+}
+
+void require_free(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                  const geometry::Pose2& pose, const std::string& what) {
+  if (cspace.is_free(pose)) return;
+  const double hl = 0.5 * scene.wheelchair.length, hw = 0.5 * scene.wheelchair.width;
+  geometry::Polygon chair;
+  for (geometry::Vec2 v : {geometry::Vec2{hl, hw}, {-hl, hw}, {-hl, -hw}, {hl, -hw}}) {
+    chair.push_back(geometry::to_world(pose, v));
+  }
+  std::ostringstream at;
+  at << what << " pose " << pose.x << "," << pose.y << "," << pose.theta << ": ";
+  if (!geometry::polygon_inside(chair, scene.room.polygon))
+    throw InputError(at.str() + "the wheelchair is outside the room");
+  for (int i = 0; i < cspace.object_count(); ++i) {
+    geometry::Object o = scene.objects[i];
+    o.pose = cspace.object_pose(i);
+    if (geometry::interiors_overlap(chair, geometry::world_footprint(o)))
+      throw InputError(at.str() + "the wheelchair collides with object '" + o.id + "'");
+  }
+  throw InputError(
+      at.str() + "the wheelchair touches or nearly touches a wall or object (not certified free)");
+}
+
+std::vector<std::string> split_sequence(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream ss(text);
+  std::string id;
+  while (std::getline(ss, id, ',')) {
+    if (id.empty()) throw InputError("--sequence: empty object id in '" + text + "'");
+    out.push_back(id);
+  }
+  if (out.empty()) throw InputError("--sequence: no object ids");
+  return out;
+}
+
+void check_sequence(const geometry::Scene& scene, const std::vector<std::string>& sequence) {
+  if (sequence.empty()) throw InputError("--sequence: no object ids");
+  for (const std::string& id : sequence) {
+    if (id != planning::kDoorId && scene.find_object(id) < 0)
+      throw InputError("--sequence: unknown object id '" + id + "'");
+  }
+}
+
+std::string plan_leg_json(const geometry::Scene& scene, const geometry::Pose2& from,
+                          const geometry::Pose2& to, const LegSettings& settings) {
+  const geometry::CSpace cspace(scene);
+  require_free(scene, cspace, from, "--from");
+  require_free(scene, cspace, to, "--to");
+  if (!(settings.step > 0.0)) throw InputError("--step: must be > 0");
+  planning::PlannerOptions options;
+  options.max_iterations = settings.iterations;
+  options.step_length = settings.step;
+  planning::TourOptions tour;
+  tour.planner = options;
+  std::unique_ptr<planning::ReusePlanner> proposed;
+  if (settings.reuse)
+    proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, tour, *settings.reuse,
+                                                        settings.seed);
+  planning::LegPlanner planner(scene, cspace, options,
+                               proposed ? proposed->hooks().planner : planning::PlannerHooks{});
+  const planning::LegResult result = planner.plan(from, to, settings.seed);
+  // Not found: is there any motion at all? (A certificate, or "not proven".)
+  bool impossible = false;
+  if (!result.found) {
+    try {
+      const geometry::FreeGrid grid(scene);
+      geometry::ReachabilityQuery query;
+      impossible = query.query(grid, from, to, grid.cell_count()) ==
+                   geometry::ReachabilityQuery::Answer::kDisconnected;
+    } catch (const std::invalid_argument&) {
+      // The chair is too small for the grid's cells: nothing is proven.
+    }
+  }
+  return planning::plan_json(from, to, result, scene.wheelchair.turning_radius, impossible);
+}
+
+std::string plan_tour_json(const geometry::Scene& scene, const std::vector<std::string>& sequence,
+                           std::uint64_t seed, const std::optional<planning::ReuseOptions>& reuse) {
+  check_sequence(scene, sequence);
+  const geometry::CSpace cspace(scene);
+  std::unique_ptr<planning::ReusePlanner> proposed;
+  if (reuse) {
+    proposed = std::make_unique<planning::ReusePlanner>(scene, cspace, planning::TourOptions{},
+                                                        *reuse, seed);
+    proposed->begin_iteration(seed);
+  }
+  planning::TourPlanner planner(scene, cspace, {}, seed,
+                                proposed ? proposed->hooks() : planning::TourHooks{});
+  const planning::Tour tour = planner.plan(sequence);
+  if (proposed) proposed->end_iteration();
+  return planning::tour_json(tour);
+}
+
+optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
+                                       const std::optional<planning::ReuseOptions>& reuse) {
+  optimize::DesignOptions options;
+  options.seed = seed;
+  options.iterations = iterations;
+  options.threads = threads;
+  options.proposed = reuse.has_value();
+  if (reuse) options.reuse = *reuse;
+  return options;
+}
+
+}  // namespace hrs::api

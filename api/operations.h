@@ -1,0 +1,80 @@
+#pragma once
+// The operations behind `hrspace plan`, `hrspace tour` and `hrspace design`
+// as plain functions: the command line (cli/) and the Python module
+// (python/) both call these, so equal inputs give equal outputs and equal
+// error messages (hrs::InputError, one line) whichever front end is used.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/cspace.h"
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "optimize/design.h"
+#include "planning/reuse_options.h"
+
+namespace hrs::api {
+
+//! The reuse techniques one operation accepts, and the ones it uses when the
+//! caller names none (the --reuse syntax of planning::ReuseOptions::parse).
+struct ReuseRule {
+  const char* allowed;
+  const char* fallback;
+};
+inline constexpr ReuseRule kPlanReuse{"samples,steering", "samples,steering"};
+inline constexpr ReuseRule kTourReuse{"samples,steering,paths,shortcuts,budget,proofs",
+                                      "samples,steering,paths"};
+inline constexpr ReuseRule kDesignReuse{"all,proofs", "all"};
+
+//! `planner` is "baseline" or "proposed"; `reuse` (proposed only) a --reuse
+//! list. nullopt for the baseline, else the proposed planner's techniques.
+//! InputError, with the command line's wording (--planner, --reuse), for an
+//! unknown planner, reuse without the proposed planner, or a technique
+//! outside `rule.allowed`.
+std::optional<planning::ReuseOptions> choose_planner(const std::string& planner,
+                                                     const std::optional<std::string>& reuse,
+                                                     const ReuseRule& rule);
+
+//! "baseline" or "proposed".
+std::string planner_name(const std::optional<planning::ReuseOptions>& reuse);
+
+//! InputError naming `what` (e.g. "--from") when the chair at `pose` cannot
+//! start or end a leg: outside the room, overlapping an object, or too close
+//! to an obstacle for the conservative C-space to certify it free.
+void require_free(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                  const geometry::Pose2& pose, const std::string& what);
+
+//! "door,bed,tv" as ids; InputError for an empty id or an empty list.
+std::vector<std::string> split_sequence(const std::string& text);
+//! InputError for an id that is neither "door" nor an object of `scene`.
+void check_sequence(const geometry::Scene& scene, const std::vector<std::string>& sequence);
+
+//! Settings of one leg (`hrspace plan`).
+struct LegSettings {
+  std::uint64_t seed = 1;
+  int iterations = 3000;  //!< RRT cap (planning::PlannerOptions::max_iterations)
+  double step = 0.25;     //!< metres between tree nodes
+  std::optional<planning::ReuseOptions> reuse;  //!< nullopt: the baseline
+};
+
+//! One leg in the scene's initial layout: the JSON object `hrspace plan`
+//! prints (one line, no newline). InputError for a start or goal that is not
+//! certified free (messages name "--from" and "--to") or a step <= 0.
+std::string plan_leg_json(const geometry::Scene& scene, const geometry::Pose2& from,
+                          const geometry::Pose2& to, const LegSettings& settings);
+
+//! One tour of `sequence` ("door" first) in the scene's initial layout: the
+//! JSON object `hrspace tour` prints (one line, no newline). InputError for
+//! an unknown object id.
+std::string plan_tour_json(const geometry::Scene& scene, const std::vector<std::string>& sequence,
+                           std::uint64_t seed, const std::optional<planning::ReuseOptions>& reuse);
+
+//! The options of one design run with the command's defaults (the fields
+//! cli/cmd_optimize.cpp sets from --seed, --iterations, --threads, --planner
+//! and --reuse); python_design_test checks that both give the same files.
+optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
+                                       const std::optional<planning::ReuseOptions>& reuse);
+
+}  // namespace hrs::api

@@ -1,0 +1,187 @@
+// hrspace.design and hrspace.Design: the layout optimizer of `hrspace design`
+// (optimize::design with api::design_options), its results as Python
+// objects and save() writing the command's four files through the same
+// writer (optimize::write_design), so the bytes match.
+//
+// The GIL is released while the design runs. After every iteration the
+// design thread takes the GIL, lets Python run its signal handlers
+// (PyErr_CheckSignals) and calls `progress`; an exception there (Ctrl-C's
+// KeyboardInterrupt, or one raised by `progress`) stops the run at the end
+// of that iteration and is raised once the best design so far is built, with
+// that Design as the exception's `design` attribute.
+
+#include <pybind11/functional.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <cmath>
+#include <exception>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "api/operations.h"
+#include "geometry/error.h"
+#include "optimize/design.h"
+#include "optimize/design_io.h"
+#include "python/bindings.h"
+
+namespace hrs::python {
+
+namespace {
+
+struct PyDesign {
+  optimize::DesignResult result;
+  optimize::RunInfo info;
+  std::string label;
+  py::object tours, report;  //!< parsed once
+};
+
+long long in_range(const std::string& name, long long v, long long min, long long max) {
+  if (v < min || v > max)
+    throw InputError("--" + name + ": " + std::to_string(v) + " is outside [" +
+                     std::to_string(min) + ", " + std::to_string(max) + "]");
+  return v;
+}
+
+//! One iteration as progress() gets it: the fields of report.json's trace.
+py::dict step_dict(const optimize::DesignStep& s, const geometry::Scene& scene, int iterations) {
+  const auto finite_or_none = [](double v) -> py::object {
+    return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
+  };
+  py::dict d;
+  d["iteration"] = s.anneal.iteration + 1;
+  d["iterations"] = iterations;
+  d["temperature"] = s.anneal.temperature;
+  d["object"] = s.anneal.object >= 0 ? py::object(py::str(scene.objects[s.anneal.object].id))
+                                     : py::object(py::none());
+  d["valid"] = s.anneal.valid;
+  d["accepted"] = s.anneal.accepted;
+  d["proposed"] = finite_or_none(s.anneal.proposed_cost);
+  d["current"] = s.anneal.current_cost;
+  d["best"] = finite_or_none(s.anneal.best_cost);
+  d["planning_ms"] = s.planning_ms;
+  return d;
+}
+
+py::object run_design(const PyScene& scene, long long seed, long long iterations,
+                      const std::string& planner, const std::optional<std::string>& reuse,
+                      long long threads, const py::object& progress) {
+  scene.validate();
+  geometry::require_sequences(scene.scene, scene.label);
+  const auto choice = api::choose_planner(planner, reuse, api::kDesignReuse);
+  const optimize::DesignOptions options = api::design_options(
+      static_cast<std::uint64_t>(in_range("seed", seed, 0, 1LL << 53)),
+      static_cast<int>(in_range("iterations", iterations, 0, 100000000)),
+      static_cast<int>(in_range("threads", threads, 0, 1024)), choice);
+
+  std::atomic<bool> stop{false};
+  std::optional<py::error_already_set> pending;  // a Python exception that stopped the run
+  std::exception_ptr failure;                    // any other exception from `progress`
+  const std::function<void(const optimize::DesignStep&)> step_done =
+      [&](const optimize::DesignStep& step) {
+        py::gil_scoped_acquire gil;
+        if (stop.load()) return;
+        try {
+          if (!progress.is_none()) progress(step_dict(step, scene.scene, options.iterations));
+          if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        } catch (py::error_already_set& e) {
+          pending.emplace(std::move(e));
+          stop.store(true);
+        } catch (...) {
+          failure = std::current_exception();
+          stop.store(true);
+        }
+      };
+
+  auto design = std::make_unique<PyDesign>();
+  {
+    py::gil_scoped_release release;
+    design->result = optimize::design(scene.scene, options, &stop, step_done);
+  }
+  if (failure) std::rethrow_exception(failure);
+  design->info = {options.seed, api::planner_name(choice), static_cast<int>(iterations)};
+  design->label = scene.label;
+  design->tours = json_loads(optimize::tours_document(design->result))["tours"];
+  design->report = json_loads(optimize::report_document(design->result, design->info));
+  py::object out = py::cast(std::move(design));
+  // A Ctrl-C during the last iteration (or a run of no iterations).
+  if (!pending && PyErr_CheckSignals() != 0) pending.emplace();
+  if (pending) {
+    py::setattr(pending->value(), "design", out);
+    throw std::move(*pending);
+  }
+  return out;
+}
+
+}  // namespace
+
+void bind_design(py::module_& m) {
+  py::class_<PyDesign>(m, "Design",
+                       "The result of design(): the best layout, its tours and the report.")
+      .def_property_readonly(
+          "layout",
+          [](const PyDesign& d) { return PyScene{d.result.layout, d.label}; },
+          "The best layout as a Scene (what layout.json holds); a new copy at each access.")
+      .def_readonly("tours", &PyDesign::tours,
+                    "The M tours of the best layout: the `tours` list of tours.json (dicts).")
+      .def_readonly("report", &PyDesign::report,
+                    "report.json as a dict: scene, seed, planner, iterations, cost {initial, "
+                    "final, terms}, time_s, acceptance_rate, trace, ...")
+      .def_property_readonly(
+          "stopped", [](const PyDesign& d) { return d.result.stopped; },
+          "True when the run was interrupted before its last iteration.")
+      .def_property_readonly(
+          "valid", [](const PyDesign& d) { return d.result.valid; },
+          "True when the best layout passed every exact check.")
+      .def_property_readonly(
+          "cost", [](const PyDesign& d) { return d.result.final.total(); },
+          "Total cost of the best layout.")
+      .def_property_readonly(
+          "initial_cost", [](const PyDesign& d) { return d.result.initial.total(); },
+          "Total cost of the input layout.")
+      .def_property_readonly(
+          "svg",
+          [](const PyDesign& d) {
+            const std::string title = d.result.layout.name + " — seed " +
+                                      std::to_string(d.info.seed) +
+                                      (d.result.valid ? "" : " (NOT VALID)");
+            return optimize::design_svg(d.result, title);
+          },
+          "design.svg's text.")
+      .def(
+          "save",
+          [](const PyDesign& d, const py::object& dir) {
+            const std::string path =
+                py::module_::import("os").attr("fspath")(dir).cast<std::string>();
+            py::gil_scoped_release release;
+            optimize::require_writable_directory(path);
+            optimize::write_design(d.result, d.info, path);
+          },
+          py::arg("dir"),
+          "Writes layout.json, tours.json, design.svg and report.json into `dir` (created if "
+          "missing), byte for byte what `hrspace design --out dir` writes for the same run; "
+          "each file is replaced atomically.")
+      .def("__repr__", [](const PyDesign& d) {
+        return "Design('" + d.result.layout.name + "', seed " + std::to_string(d.info.seed) +
+               ", cost " + std::to_string(d.result.initial.total()) + " -> " +
+               std::to_string(d.result.final.total()) +
+               (d.result.stopped ? ", stopped)" : ")");
+      });
+
+  m.def("design", &run_design, py::arg("scene"), py::kw_only(), py::arg("seed") = 1,
+        py::arg("iterations") = 700, py::arg("planner") = "baseline",
+        py::arg("reuse") = py::none(), py::arg("threads") = 0, py::arg("progress") = py::none(),
+        "Optimizes the scene's furniture layout as `hrspace design` does (simulated annealing, "
+        "every layout toured by the wheelchair) and returns a Design. seed, iterations, "
+        "planner ('baseline' or 'proposed'), reuse (the proposed planner's techniques) and "
+        "threads (0: all cores; results do not depend on it) are the command's options. "
+        "progress(step) is called after every iteration with a dict (the fields of report.json's "
+        "trace: iteration from 1, iterations, temperature, object, valid, accepted, proposed, "
+        "current, best, planning_ms). The "
+        "GIL is released while it runs. Ctrl-C stops the run at the end of the current "
+        "iteration and raises KeyboardInterrupt whose `design` attribute holds the best "
+        "design so far; an exception raised by progress stops it the same way.");
+}
+
+}  // namespace hrs::python

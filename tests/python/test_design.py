@@ -1,0 +1,83 @@
+"""hrspace.design: the same files as `hrspace design` for the same inputs and
+seed (layout.json, tours.json and design.svg byte for byte, report.json but
+for its wall-clock times); progress; errors."""
+
+import json
+
+import pytest
+
+import hrspace
+from conftest import BEDROOM, SOURCE_DIR, cli_error, drop_timings, run_cli
+
+FILES = ["layout.json", "tours.json", "design.svg", "report.json"]
+
+
+def compare_with_command(tmp_path, scene_path, seed, iterations, planner, threads):
+    scene = hrspace.Scene(scene_path)
+    steps = []
+    result = hrspace.design(scene, seed=seed, iterations=iterations, planner=planner,
+                            threads=threads, progress=steps.append)
+    result.save(tmp_path / "py")
+    status, out, err = run_cli("design", scene_path, "--out", tmp_path / "cli", "--seed", seed,
+                               "--iterations", iterations, "--planner", planner, "--threads", threads)
+    assert status == 0, err
+    for name in FILES[:3]:
+        ours, theirs = (tmp_path / "py" / name).read_bytes(), (tmp_path / "cli" / name).read_bytes()
+        assert ours == theirs, name
+    ours = json.loads((tmp_path / "py" / "report.json").read_text())
+    theirs = json.loads((tmp_path / "cli" / "report.json").read_text())
+    assert drop_timings(ours) == drop_timings(theirs)
+    assert sorted(p.name for p in (tmp_path / "py").iterdir()) == sorted(FILES)
+    # The objects equal the files.
+    assert result.layout == hrspace.Scene(tmp_path / "cli" / "layout.json")
+    assert result.tours == json.loads((tmp_path / "cli" / "tours.json").read_text())["tours"]
+    assert drop_timings(result.report) == drop_timings(theirs)
+    assert result.svg.encode() == (tmp_path / "cli" / "design.svg").read_bytes()
+    assert [s["iteration"] for s in steps] == list(range(1, iterations + 1))
+    assert steps[-1]["best"] == pytest.approx(result.cost)
+    assert not result.stopped
+    return result
+
+
+def test_proposed_design_equals_the_command(tmp_path):
+    compare_with_command(tmp_path, BEDROOM, seed=2, iterations=40, planner="proposed", threads=2)
+
+
+def test_baseline_design_equals_the_command(tmp_path):
+    compare_with_command(tmp_path, SOURCE_DIR / "scenes" / "small_bedroom.json", seed=1,
+                         iterations=4, planner="baseline", threads=1)
+
+
+def test_an_exception_in_progress_stops_the_design_and_carries_it():
+    def progress(step):
+        if step["iteration"] == 3:
+            raise RuntimeError("enough")
+
+    with pytest.raises(RuntimeError, match="enough") as e:
+        hrspace.design(hrspace.Scene(BEDROOM), iterations=500, planner="proposed", progress=progress)
+    best = e.value.design
+    assert best.stopped and len(best.report["trace"]) == 3
+    best.layout.validate()
+
+
+def test_scene_without_sequences_gives_the_commands_message(tmp_path):
+    data = json.loads(BEDROOM.read_text())
+    # Every object row only stays put: no walk of `visits` moves from the door.
+    rows = data["activity"]["transitions"]
+    for name in rows:
+        if name != "door":
+            rows[name] = {name: 1.0}
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(data))
+    with pytest.raises(ValueError) as e:
+        hrspace.design(hrspace.Scene(path), iterations=1)
+    assert str(e.value) == cli_error("design", path, "--out", tmp_path / "out")
+
+
+def test_save_into_an_unwritable_place_is_an_error(tmp_path):
+    result = hrspace.design(hrspace.Scene(BEDROOM), iterations=0, planner="proposed")
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    with pytest.raises(ValueError) as e:
+        result.save(blocker / "out")
+    assert str(e.value) == cli_error("design", BEDROOM, "--out", blocker / "out")

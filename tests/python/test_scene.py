@@ -1,0 +1,106 @@
+"""hrspace.Scene: loading, editing, validation and its messages."""
+
+import copy
+import json
+import pathlib
+
+import numpy as np
+import pytest
+
+import hrspace
+from conftest import BEDROOM, cli_error
+
+
+def test_load_from_path_pathlike_and_json_text_agree():
+    a = hrspace.Scene(str(BEDROOM))
+    b = hrspace.Scene(pathlib.Path(BEDROOM))
+    c = hrspace.Scene(BEDROOM.read_text())
+    d = hrspace.Scene.from_json(a.to_json())
+    assert a == b == c == d
+    assert a.label == str(BEDROOM) and c.label == "<string>"
+    assert a.name == "bedroom"
+
+
+def test_objects_and_poses_are_readable():
+    s = hrspace.Scene(BEDROOM)
+    data = json.loads(BEDROOM.read_text())
+    assert s.object_ids == [o["id"] for o in data["objects"]]
+    assert s.poses.shape == (len(data["objects"]), 3)
+    for obj, row in zip(s.objects, s.poses):
+        assert obj.pose == tuple(row)
+    assert s.room.shape[1] == 2 and s.wheelchair["turning_radius"] > 0
+    assert len(s.start_pose) == 3
+    assert s.object("bed").world_footprint.shape[1] == 2
+
+
+def test_edits_change_the_scene_and_copies_are_independent():
+    s = hrspace.Scene(BEDROOM)
+    c = copy.deepcopy(s)
+    s.object("bed").pose = (2.6, 2.9, -1.5707963267948966)
+    assert s.object("bed").pose == (2.6, 2.9, -1.5707963267948966)
+    assert c.object("bed").pose == tuple(hrspace.Scene(BEDROOM).poses[0])
+    poses = s.poses
+    poses[1, 0] += 0.05
+    s.poses = poses
+    assert np.array_equal(s.poses, poses)
+    s.validate()
+    # The edited scene's text is a valid scene file with the new poses.
+    assert np.array_equal(hrspace.Scene.from_json(s.to_json()).poses, poses)
+    with pytest.raises(KeyError):
+        s.object("piano")
+
+
+def test_an_edit_that_breaks_a_rule_gives_the_readers_message(tmp_path):
+    path = tmp_path / "bedroom.json"
+    path.write_text(BEDROOM.read_text())
+    s = hrspace.Scene(path)
+    s.object("bed").pose = (100.0, 100.0, 0.0)
+    with pytest.raises(ValueError) as e:
+        s.validate()
+    path.write_text(s.to_json())
+    assert str(e.value) == cli_error("validate", path)
+    with pytest.raises(ValueError):
+        hrspace.CSpace(s)
+
+
+BROKEN = {
+    "not json": "{ oops",
+    "empty": "",
+    "wrong format": '{"format": "x"}',
+}
+
+
+@pytest.mark.parametrize("name", sorted(BROKEN))
+def test_broken_files_give_the_commands_message(tmp_path, name):
+    path = tmp_path / "scene.json"
+    path.write_text(BROKEN[name])
+    with pytest.raises(ValueError) as e:
+        hrspace.Scene(path)
+    assert str(e.value) == cli_error("validate", path)
+
+
+def test_field_errors_give_the_commands_message(tmp_path):
+    data = json.loads(BEDROOM.read_text())
+    data["wheelchair"]["width"] = -1
+    path = tmp_path / "scene.json"
+    path.write_text(json.dumps(data))
+    with pytest.raises(ValueError) as e:
+        hrspace.Scene(path)
+    assert str(e.value) == cli_error("validate", path)
+    assert "/wheelchair/width" in str(e.value)
+
+
+def test_missing_file_gives_the_commands_message(tmp_path):
+    with pytest.raises(ValueError) as e:
+        hrspace.Scene(tmp_path / "none.json")
+    assert str(e.value) == cli_error("validate", tmp_path / "none.json")
+
+
+def test_bad_pose_values_are_value_errors():
+    s = hrspace.Scene(BEDROOM)
+    with pytest.raises(ValueError):
+        s.object("bed").pose = (float("nan"), 0.0, 0.0)
+    with pytest.raises(ValueError):
+        s.object("bed").pose = (1.0, 2.0)
+    with pytest.raises(ValueError):
+        s.poses = np.zeros((2, 3))
