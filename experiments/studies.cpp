@@ -118,6 +118,8 @@ Row design_measures(const optimize::DesignResult& r) {
   m.set("valid", r.valid ? 1L : 0L);
   m.set("acceptance", r.proposals ? static_cast<double>(r.accepted) / r.proposals : 0.0);
   m.set("tours_invalidated", r.tours_invalidated);
+  m.set("early_rejections", r.early.proposals);
+  m.set("legs_refused", r.legs_refused);
   if (r.proposed) {
     m.set("legs_database", static_cast<long>(r.counters.legs_database));
     m.set("legs_planned", static_cast<long>(r.counters.legs_planned));
@@ -617,6 +619,59 @@ RunOutput method_run(const RunSpec& spec, RunContext& context) {
   return out;
 }
 
+// --- hard_rooms and design_loop ---------------------------------------------
+
+//! Rooms the project made hard on purpose (scenes/): a door area sealed off,
+//! a narrow passage, a crowded room.
+const std::vector<std::string> kHardRooms = {"l_studio", "narrow_passage", "crowded_living"};
+
+std::vector<RunSpec> hard_runs(const StudyConfig& c) {
+  std::vector<RunSpec> runs;
+  for (const auto& room : rooms_of(c, kHardRooms))
+    for (const auto& seed : seed_list(c))
+      for (const char* planner : {"baseline", "all"})
+        runs.push_back(
+            make_run("hard_rooms", {{"mode", "design"}, {"room", room}, {"seed", seed},
+                                    {"planner", planner}}));
+  return runs;
+}
+
+//! The design loop's additions (refused legs, early rejection) on and off,
+//! in the paper's rooms and the hard ones, for both planners.
+std::vector<RunSpec> loop_runs(const StudyConfig& c) {
+  std::vector<std::string> rooms = rooms_of(c, {"bedroom", "office", "living_room"});
+  std::vector<RunSpec> runs;
+  for (const auto& room : rooms)
+    for (const auto& seed : seed_list(c))
+      for (const char* planner : {"baseline", "all"})
+        for (const char* loop : {"on", "off"})
+          runs.push_back(make_run("design_loop", {{"mode", "design"}, {"room", room},
+                                                  {"seed", seed}, {"planner", planner},
+                                                  {"loop", loop}}));
+  return runs;
+}
+
+RunOutput loop_run(const RunSpec& spec, RunContext& context) {
+  const geometry::Scene scene = load_room(context.config, param(spec, "room"));
+  optimize::DesignOptions o = run_options(spec, context);
+  if (param(spec, "loop") == "off") o.refuse_impossible = o.early_reject = false;
+  return design_output(optimize::design(scene, o, context.stop));
+}
+
+Table hard_summary(const Table& runs) {
+  Table s = summarize_table(runs, {"room", "planner"}, kDesignMeasures);
+  add_ratio(s, "planner", "baseline", {"room"}, "total_s");
+  return s;
+}
+
+Table loop_summary(const Table& runs) {
+  Table s = summarize_table(runs, {"room", "planner", "loop"},
+                            {"total_s", "planning_s", "cost_final", "tours_found",
+                             "early_rejections", "legs_refused"});
+  add_ratio(s, "loop", "off", {"room", "planner"}, "total_s");
+  return s;
+}
+
 Table method_summary(const Table& runs) {
   return summarize_table(runs, {"room"}, {"leg_found", "leg_length_m"});
 }
@@ -643,6 +698,13 @@ const std::vector<Study>& studies() {
        ao_summary},
       {"designs", "Fig. \"cover3\" and Fig. 1", "designs per room; path weights 0 vs the scene's",
        designs_runs, designs_run, designs_summary},
+      {"hard_rooms", "beyond the paper: rooms made hard on purpose",
+       "baseline vs proposed designs in a sealed L-studio, a narrow passage, a crowded room",
+       hard_runs, [](const RunSpec& s, RunContext& c) { return design_or_replay(s, c); },
+       hard_summary},
+      {"design_loop", "beyond the paper: refused legs and early rejection",
+       "designs with the design loop's additions on and off, both planners", loop_runs,
+       loop_run, loop_summary},
       {"method", "Fig. \"actiongraph\" and Fig. \"goal\"",
        "AO graphs; goal poses around an object and one leg", method_runs, method_run,
        method_summary},

@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 
+#include "geometry/random.h"
+
 namespace hrs::optimize {
 
 double acceptance_probability(double delta, double t) {
@@ -54,7 +56,7 @@ void jump_to(const AnnealOptions& options, double rx, double ry, double rt, Move
 //! One proposal for `object` at iteration k. Draws in a fixed order: the
 //! kind of move, then its parameters (the object was drawn before).
 Move propose_move(const AnnealOptions& options, const Pose2& from, int object, int k,
-                  std::mt19937_64& rng, std::uniform_real_distribution<double>& unit) {
+                  std::mt19937_64& rng) {
   constexpr double kPi = std::numbers::pi;
   const double step = geometric(options.step_start, options.step_end, k, options.iterations);
   const double shrink = options.step_start > 0.0 ? step / options.step_start : 1.0;
@@ -62,10 +64,10 @@ Move propose_move(const AnnealOptions& options, const Pose2& from, int object, i
   move.object = object;
   move.from = from;
   move.to = from;
-  move.rotation = unit(rng) < options.rotate_probability;
+  move.rotation = uniform01(rng) < options.rotate_probability;
   if (move.rotation) {
-    const double kind = unit(rng);
-    const double r = unit(rng);
+    const double kind = uniform01(rng);
+    const double r = uniform01(rng);
     double turn;
     if (kind < options.quarter_turn_probability) {
       turn = r < 1.0 / 3.0 ? kPi / 2 : (r < 2.0 / 3.0 ? -kPi / 2 : kPi);
@@ -75,11 +77,11 @@ Move propose_move(const AnnealOptions& options, const Pose2& from, int object, i
     move.to.theta = geometry::wrap_angle(from.theta + turn);
     return move;
   }
-  const double jump = unit(rng), rx = unit(rng), ry = unit(rng);
+  const double jump = uniform01(rng), rx = uniform01(rng), ry = uniform01(rng);
   if (options.bounds && jump < options.jump_probability * shrink) {
     // A jump anywhere in the bounds (a symmetric proposal): escapes places
     // that small steps cannot leave while the chain is hot.
-    jump_to(options, rx, ry, unit(rng), move);
+    jump_to(options, rx, ry, uniform01(rng), move);
   } else {
     move.to.x += (2.0 * rx - 1.0) * step;
     move.to.y += (2.0 * ry - 1.0) * step;
@@ -150,7 +152,6 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     if (callbacks.new_best) callbacks.new_best();
   }
 
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (int k = 0; k < options.iterations && !candidates.empty(); ++k) {
     if (stop && stop->load()) {
       result.stopped = true;
@@ -160,22 +161,22 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     e.iteration = k;
     e.temperature = temperature_at(options, k);
     int object =
-        candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
+        candidates[uniform_index(rng, candidates.size())];
     bool focused = false;
     if (callbacks.focus) {
       const std::vector<int> focus = callbacks.focus();
-      if (!focus.empty() && unit(rng) < options.focus_probability) {
-        object = focus[std::uniform_int_distribution<std::size_t>(0, focus.size() - 1)(rng)];
+      if (!focus.empty() && uniform01(rng) < options.focus_probability) {
+        object = focus[uniform_index(rng, focus.size())];
         focused = true;
       }
     }
-    Move move = propose_move(options, chain.poses[object], object, k, rng, unit);
-    if (focused && options.bounds && !move.jump && unit(rng) < 0.5) {
-      const double rx = unit(rng), ry = unit(rng);
+    Move move = propose_move(options, chain.poses[object], object, k, rng);
+    if (focused && options.bounds && !move.jump && uniform01(rng) < 0.5) {
+      const double rx = uniform01(rng), ry = uniform01(rng);
       move = Move{object, chain.poses[object], chain.poses[object]};
-      jump_to(options, rx, ry, unit(rng), move);
+      jump_to(options, rx, ry, uniform01(rng), move);
     }
-    const double u = unit(rng);  // drawn before the proposal is costed
+    const double u = uniform01(rng);  // drawn before the proposal is costed
     // A jump is redrawn until valid (at most jump_attempts draws in all, or
     // focus_jump_attempts for a focus object); decide() checks the last
     // draw again.
@@ -185,8 +186,8 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
       const bool ok = callbacks.move_valid(chain.poses, object);
       chain.poses[object] = move.from;
       if (ok) break;
-      const double rx = unit(rng), ry = unit(rng);
-      jump_to(options, rx, ry, unit(rng), move);
+      const double rx = uniform01(rng), ry = uniform01(rng);
+      jump_to(options, rx, ry, uniform01(rng), move);
     }
     e.object = object;
     e.rotation = move.rotation;

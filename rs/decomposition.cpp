@@ -9,6 +9,8 @@
 #include <numbers>
 #include <set>
 
+#include "geometry/random.h"
+
 namespace hrs::rs {
 namespace {
 
@@ -80,11 +82,12 @@ Decomposition::Decomposition(const DecompositionOptions& options, std::mt19937_6
 
 Pose2 Decomposition::uniform(std::mt19937_64& rng) const {
   // The empty room twice the size, centred on the start.
-  std::uniform_real_distribution<double> x(-options_.room_width, options_.room_width);
-  std::uniform_real_distribution<double> y(-options_.room_depth, options_.room_depth);
-  std::uniform_real_distribution<double> t(-std::numbers::pi, std::numbers::pi);
-  const double px = x(rng), py = y(rng);
-  return {px, py, t(rng)};
+  // Uniform draws from the top bits of the engine (geometry/random.h): the
+  // same numbers with every standard library.
+  const double px = (2.0 * uniform01(rng) - 1.0) * options_.room_width;
+  const double py = (2.0 * uniform01(rng) - 1.0) * options_.room_depth;
+  const double pt = (2.0 * uniform01(rng) - 1.0) * std::numbers::pi;
+  return {px, py, pt};
 }
 
 Pose2 Decomposition::relative(const Pose2& from, const Pose2& to) const {
