@@ -1,12 +1,20 @@
 // The annealer on toy costs: finds a known optimum, the Metropolis rule is
-// exact, fixed objects never move, invalid moves are never evaluated.
+// exact, fixed objects never move, invalid moves are never evaluated; early
+// rejection (Acceptance::rejects) rejects a bound only when every cost above
+// it is rejected, so costs that stop at a rejected bound decide the same.
 #include "optimize/annealer.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
+#include <random>
+#include <string>
+
+#include "geometry/random.h"
 
 namespace hrs::optimize {
 namespace {
@@ -195,6 +203,121 @@ TEST(Annealer, JumpsLandInTheBoundsAndOnlyWhileHot) {
   std::mt19937_64 rng2(5);
   anneal({{10, 10, 0}}, {true}, o, watch, rng2);
   EXPECT_EQ(without, 0);
+}
+
+//! A random double in [a, b).
+double uniform(std::mt19937_64& rng, double a, double b) { return a + (b - a) * uniform01(rng); }
+
+TEST(Annealer, AcceptanceRejectsABoundOnlyWhenEveryCostAboveItIsRejected) {
+  // rejects(lb) ⇒ !metropolis_accept(c − current, t, u) for every c >= lb:
+  // the cost may stop at a lower bound and the decision is the same. Bounds
+  // are drawn around the decision's threshold current − t·ln(u) (to within
+  // a few ulps up to a few temperatures), at scales 1e-3 … 1e4, with t = 0
+  // and u = 0 among them. An inactive Acceptance never rejects.
+  std::mt19937_64 rng(20261123);
+  int rejected = 0, kept = 0, near_threshold = 0;
+  for (int i = 0; i < 400'000; ++i) {
+    const double scale = std::pow(10.0, uniform(rng, -3.0, 4.0));
+    const double current = (rng() % 8 == 0 ? -1.0 : 1.0) * scale * uniform(rng, 0.0, 10.0);
+    const double t = rng() % 16 == 0 ? 0.0 : scale * std::pow(10.0, uniform(rng, -6.0, 0.5));
+    const double u = rng() % 64 == 0 ? 0.0 : uniform01(rng);
+    const double threshold = u > 0.0 && t > 0.0 ? current - t * std::log(u) : current;
+    double lb;
+    switch (rng() % 4) {
+      case 0:  // ulps from the threshold
+        lb = threshold;
+        for (int s = static_cast<int>(rng() % 41) - 20; s != 0; s += s > 0 ? -1 : 1)
+          lb = std::nextafter(lb, s > 0 ? INFINITY : -INFINITY);
+        break;
+      case 1:  // relative 1e-12 … 1e-6 from the threshold, either side
+        lb = threshold *
+             (1.0 + (rng() % 2 ? 1 : -1) * std::pow(10.0, uniform(rng, -12.0, -6.0)));
+        break;
+      case 2:  // a few temperatures (or scales) around it
+        lb = threshold + uniform(rng, -3.0, 3.0) * (t > 0.0 ? t : scale);
+        break;
+      default:  // anywhere at the scale
+        lb = uniform(rng, -2.0, 12.0) * scale;
+        break;
+    }
+    near_threshold += std::abs(lb - threshold) <= 1e-8 * std::max(1.0, std::abs(threshold));
+    const Acceptance inactive{false, current, t, u};
+    ASSERT_FALSE(inactive.rejects(lb));
+    const Acceptance a{true, current, t, u};
+    const std::string what = "current " + std::to_string(current) + " t " + std::to_string(t) +
+                             " u " + std::to_string(u) + " lb " + std::to_string(lb);
+    // Not vacuous: a cost 2e-9 (relative) below the bound that the rule
+    // rejects makes the bound rejected (the documented margin is 1e-9).
+    const double below = lb - 2e-9 * std::max(1.0, std::abs(lb));
+    if (!metropolis_accept(below - current, t, u)) {
+      ASSERT_TRUE(a.rejects(lb)) << what;
+    }
+    if (!a.rejects(lb)) {
+      ++kept;
+      continue;
+    }
+    ++rejected;
+    const double costs[] = {lb,
+                            lb + std::abs(lb) * 1e-15,
+                            std::nextafter(lb, INFINITY),
+                            lb * (1 + 1e-15),
+                            lb + std::abs(lb) * uniform(rng, 0.0, 1e-6),
+                            lb + uniform(rng, 0.0, 10.0) * (t > 0.0 ? t : scale),
+                            lb + scale * uniform(rng, 0.0, 1e3),
+                            INFINITY};
+    for (const double c : costs) {
+      if (!(c >= lb)) continue;  // lb·(1 + 1e-15) is below a negative lb
+      ASSERT_FALSE(metropolis_accept(c - current, t, u)) << what << " c " << c;
+    }
+  }
+  std::printf("rejected %d, not rejected %d, bounds within 1e-8 of the threshold %d\n", rejected,
+              kept, near_threshold);
+  EXPECT_GT(rejected, 50'000);
+  EXPECT_GT(kept, 50'000);
+  EXPECT_GT(near_threshold, 100'000);
+}
+
+TEST(Annealer, CostsThatStopAtARejectedBoundMakeTheSameDecisions) {
+  // A toy cost of two parts (a cheap one known first, then the rest): a
+  // run whose cost returns the first part alone whenever acceptance rejects
+  // it makes the same decisions, the same chain and the same best layout as
+  // the run that always returns the whole cost.
+  auto part1 = [](const Pose2& p) {
+    return p.x * p.x + (p.y - 1) * (p.y - 1) + 0.3 * std::abs(p.theta) + std::sin(4 * p.x);
+  };
+  auto part2 = [](const Pose2& p) { return 0.02 * (1.5 + std::sin(5 * p.x + p.y)); };
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+    AnnealResult r[2];
+    int stopped_early = 0;
+    for (int early = 0; early < 2; ++early) {
+      AnnealCallbacks cb;
+      cb.move_valid = [](const std::vector<Pose2>& p, int) { return std::abs(p[0].x) < 4; };
+      cb.cost = [&, early](const std::vector<Pose2>& p, const Move&, const Acceptance& a) {
+        double c = part1(p[0]) + part1(p[1]);
+        if (early && a.rejects(c)) return ++stopped_early, c;
+        return c + part2(p[0]) + part2(p[1]);
+      };
+      AnnealOptions o;
+      o.iterations = 3000;
+      o.t_start = 1.0;
+      o.t_end = 1e-3;
+      std::mt19937_64 rng(seed);
+      r[early] = anneal({{2, 1, 0.5}, {-1, 2, 3}}, {true, true}, o, cb, rng);
+    }
+    ASSERT_EQ(r[0].trace.size(), r[1].trace.size());
+    for (std::size_t i = 0; i < r[0].trace.size(); ++i) {
+      ASSERT_EQ(r[0].trace[i].accepted, r[1].trace[i].accepted) << "seed " << seed << " step " << i;
+      ASSERT_EQ(r[0].trace[i].valid, r[1].trace[i].valid) << "seed " << seed << " step " << i;
+      ASSERT_EQ(r[0].trace[i].current_cost, r[1].trace[i].current_cost) << "seed " << seed;
+    }
+    EXPECT_EQ(r[0].best, r[1].best);
+    EXPECT_EQ(r[0].best_cost, r[1].best_cost);
+    EXPECT_EQ(r[0].final_poses, r[1].final_poses);
+    EXPECT_EQ(r[0].accepted, r[1].accepted);
+    std::printf("seed %d: %d of %d valid proposals stopped at the bound\n", static_cast<int>(seed),
+                stopped_early, r[1].valid_proposals);
+    EXPECT_GT(stopped_early, 300) << "seed " << seed;
+  }
 }
 
 }  // namespace
