@@ -1,7 +1,8 @@
 // `hrspace design`: the layout optimizer of paper §III (optimize/design.h)
 // with its outputs (optimize/design_io.h), a progress bar on a terminal and
 // Ctrl-C, SIGTERM or SIGHUP writing the best design so far (exit 128 + the
-// signal's number).
+// signal's number; nothing is written when the signal comes before the first
+// iteration, e.g. during a long sequence enumeration).
 
 #include <unistd.h>
 
@@ -145,7 +146,9 @@ constexpr const char* kDesignUsage =
     "Outputs of an earlier run that this run does not rewrite (numbered design\n"
     "directories beyond K, a stale contact sheet) are removed at the end, with a note.\n"
     "Ctrl-C, SIGTERM or SIGHUP stops after the current iteration, writes the best\n"
-    "design so far and exits 128 + the signal (130 for Ctrl-C); a second one quits at once.\n";
+    "design so far and exits 128 + the signal (130 for Ctrl-C); a second one quits at once.\n"
+    "Before the first iteration (enumerating sequences, generating goal poses) it stops\n"
+    "at once and writes nothing.\n";
 
 std::string format_eta(double seconds) {
   const long s = static_cast<long>(seconds + 0.5);
@@ -276,8 +279,20 @@ int cmd_design(const Argv& argv) {
     if (reuse) options.reuse = *reuse;
     const auto progress = progress_bar(
         tty, iterations, designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
-    const optimize::DesignResult result =
-        optimize::design(scene, options, &g_interrupted, progress);
+    optimize::DesignResult result;
+    try {
+      result = optimize::design(scene, options, &g_interrupted, progress);
+    } catch (const Interrupted&) {
+      // Stopped while enumerating the sequences or generating goal poses:
+      // there is no design to write (earlier designs of --designs are kept).
+      if (tty) std::cerr << "\r\033[K" << std::flush;
+      std::fprintf(stderr,
+                   "hrspace design: interrupted before the first iteration%s; nothing written%s\n",
+                   designs > 1 ? (" of design " + std::to_string(d + 1)).c_str() : "",
+                   designs > 1 ? " for it" : "");
+      interrupted = true;
+      break;
+    }
     if (tty) std::cerr << "\r\033[K" << std::flush;
     const std::filesystem::path dir = designs > 1
                                           ? std::filesystem::path(*out) / std::to_string(d + 1)
@@ -288,6 +303,11 @@ int cmd_design(const Argv& argv) {
         optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
     print_summary(dir, result);
     interrupted = result.stopped || g_interrupted.load();
+  }
+  if (svgs.empty()) {  // interrupted before the first design: --out is left as it was
+    for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+      sigaction(kStopSignals[i], &previous[i], nullptr);
+    return 128 + (g_signal.load() ? g_signal.load() : SIGINT);
   }
   if (designs > 1) {
     optimize::write_files_atomic(

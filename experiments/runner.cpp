@@ -295,6 +295,10 @@ RunnerReport run_study(const Study& study, const StudyConfig& config,
         std::lock_guard lock(report_mutex);
         ++report.done;
         progress.show(report.done + report.failed, spec.key);
+      } catch (const Interrupted&) {  // stopped before the design's first iteration
+        std::lock_guard lock(report_mutex);
+        report.stopped = true;
+        return;
       } catch (const std::exception& e) {
         std::lock_guard lock(report_mutex);
         ++report.failed;

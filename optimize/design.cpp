@@ -8,6 +8,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
 #include "optimize/thread_pool.h"
@@ -81,8 +82,10 @@ class TourRound {
     double bound = 0.0;       //!< base + the kept tours' costs
   };
 
+  //! `stop` (may be null): checked while the planners generate their goal
+  //! poses (hrs::Interrupted once set).
   TourRound(const geometry::Scene& scene, const DesignOptions& options,
-            const std::vector<Sequence>& sequences)
+            const std::vector<Sequence>& sequences, const std::atomic<bool>* stop = nullptr)
       : work_(scene),
         cspace_(work_, options.cspace),
         gate_(work_, cspace_, options.gate),
@@ -101,6 +104,7 @@ class TourRound {
     planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
     if (!reuse_ && options.refuse_impossible) hooks.gate = &gate_;
     hooks.cancel = &cancel_;
+    hooks.stop = stop;
     for (std::size_t k = 0; k < sequences.size(); ++k) {
       hooks.tour = static_cast<int>(k);
       planners_.push_back(std::make_unique<planning::TourPlanner>(
@@ -218,9 +222,9 @@ class DesignRun {
         options_(options),
         stop_(stop),
         progress_(progress),
-        sequences_(scene_sequences(scene)),
+        sequences_(scene_sequences(scene, stop)),
         model_(scene, sequences_),
-        round_(scene, options, sequences_),
+        round_(scene, options, sequences_, stop),
         work_(round_.work()),
         cspace_(round_.cspace()),
         tours_(round_.tours()) {
@@ -239,6 +243,8 @@ class DesignRun {
   }
 
   DesignResult run() {
+    // A stop before the first plan: there is no design yet (design.h).
+    throw_if_stopped(stop_, "design setup");
     plan_current();
     current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
     focus_current_ = walling_objects();

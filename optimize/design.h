@@ -126,6 +126,9 @@ std::string object_violation(const geometry::Scene& scene, int index);
 
 //! Runs one design. `stop` (may be null) ends the run after the current
 //! iteration; `progress` (may be null) is called after every iteration.
+//! Set before the first iteration's tours are planned (while the sequences
+//! are enumerated or the goal poses generated, both checked in their inner
+//! loops), it makes design() throw hrs::Interrupted: there is no design yet.
 DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
                     const std::atomic<bool>* stop = nullptr,
                     const std::function<void(const DesignStep&)>& progress = {});

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <set>
 
+#include "geometry/error.h"
+
 namespace hrs::optimize {
 
 AoGraph::AoGraph(const geometry::Activity& activity) {
@@ -56,7 +58,7 @@ struct Key {
 // prefixes with the same extension). The order is the best-first order: lower
 // cost, then lexicographically smaller node indices.
 std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& start, int visits,
-                                    int count) {
+                                    int count, const std::atomic<bool>* stop) {
   std::vector<Sequence> out;
   const int s = graph.index_of(start);
   if (s < 0 || count <= 0 || visits < 0) return out;
@@ -73,6 +75,7 @@ std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& sta
     std::vector<Key> next_keys;
     std::vector<std::pair<Key, int>> candidates;  // key (rank of the parent), parent index
     for (int j = 0; j < n; ++j) {
+      throw_if_stopped(stop, "sequence enumeration");
       candidates.clear();
       for (std::size_t e = 0; e < last.size(); ++e) {
         const double p = graph.probability(last[e].node, j);
@@ -124,10 +127,11 @@ std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& sta
   return out;
 }
 
-std::vector<Sequence> scene_sequences(const geometry::Scene& scene) {
+std::vector<Sequence> scene_sequences(const geometry::Scene& scene,
+                                      const std::atomic<bool>* stop) {
   const AoGraph graph(scene.activity);
   return top_sequences(graph, std::string(geometry::kStartNodeId), scene.activity.visits,
-                       scene.activity.sequences);
+                       scene.activity.sequences, stop);
 }
 
 std::map<std::string, double> object_scales(const std::vector<Sequence>& sequences) {

@@ -21,6 +21,7 @@
 // search over prefixes grows exponentially with `visits` on graphs with many
 // equally likely moves).
 
+#include <atomic>
 #include <map>
 #include <string>
 #include <vector>
@@ -56,11 +57,16 @@ struct Sequence {
 
 //! The `count` most likely sequences of `visits` moves from `start`, most
 //! likely first (fewer if fewer exist). Exact; memory O(count · nodes · visits).
+//! `stop` (may be null) is checked for every node of every step (up to about
+//! a millisecond apart at the format's limits): once set, hrs::Interrupted is
+//! thrown (geometry/error.h); no partial result is returned.
 std::vector<Sequence> top_sequences(const AoGraph& graph, const std::string& start, int visits,
-                                    int count);
+                                    int count, const std::atomic<bool>* stop = nullptr);
 
-//! The scene's M sequences (activity.sequences, activity.visits, from "door").
-std::vector<Sequence> scene_sequences(const geometry::Scene& scene);
+//! The scene's M sequences (activity.sequences, activity.visits, from "door");
+//! `stop` as for top_sequences().
+std::vector<Sequence> scene_sequences(const geometry::Scene& scene,
+                                      const std::atomic<bool>* stop = nullptr);
 
 //! α_i of §III-D for every node of the sequences: in sequence s a node is
 //! counted once at the start or end and twice in the middle (the number of

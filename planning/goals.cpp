@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/error.h"
+
 namespace hrs::planning {
 
 using geometry::point_segment_distance;
@@ -84,7 +86,7 @@ std::vector<GoalPose> place_goal_poses(const std::vector<GoalPose>& local, const
 }
 
 std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geometry::Object& object,
-                                       const GoalOptions& options) {
+                                       const GoalOptions& options, const std::atomic<bool>* stop) {
   const Polygon& fp = object.footprint;
   std::vector<GoalPose> out;
   if (fp.size() < 3) return out;
@@ -106,6 +108,7 @@ std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geome
   std::size_t edge = 0;
   double edge_start = 0.0;
   for (int slot = 0; slot < n; ++slot) {
+    throw_if_stopped(stop, "goal-pose generation");
     const double s = (slot + 0.5) * spacing;
     while (edge + 1 < fp.size() &&
            edge_start + geometry::norm(fp[(edge + 1) % fp.size()] - fp[edge]) < s) {

@@ -6,6 +6,7 @@
 // allowed `approach` sides are used, and the chair stops `gap` away from the
 // footprint. Poses in collision are dropped.
 
+#include <atomic>
 #include <vector>
 
 #include "geometry/cspace.h"
@@ -38,9 +39,12 @@ std::vector<GoalPose> goal_poses(const geometry::Scene& scene, const geometry::O
 //! The goal poses of `object` in its own frame (object at the origin,
 //! heading +x), before any collision test: they depend only on the
 //! footprint, the chair and the options, so a planner computes them once
-//! per object and places them wherever the object moves.
+//! per object and places them wherever the object moves. `stop` (may be
+//! null) is checked before every slot: once set, hrs::Interrupted is thrown
+//! (geometry/error.h); no partial result is returned.
 std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geometry::Object& object,
-                                       const GoalOptions& options = {});
+                                       const GoalOptions& options = {},
+                                       const std::atomic<bool>* stop = nullptr);
 //! `local` goal poses moved with the object to `object_pose`, the ones in
 //! collision in `cspace` dropped.
 std::vector<GoalPose> place_goal_poses(const std::vector<GoalPose>& local,

@@ -42,7 +42,7 @@ TourPlanner::TourPlanner(const geometry::Scene& scene, const CSpace& cspace, Tou
       planner_(scene, cspace, options.planner, hooks.planner),
       validator_(cspace, scene.wheelchair.turning_radius) {
   for (const geometry::Object& o : scene.objects)
-    local_goals_.push_back(local_goal_poses(scene, o, options_.goals));
+    local_goals_.push_back(local_goal_poses(scene, o, options_.goals, hooks.stop));
 }
 
 std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {

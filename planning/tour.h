@@ -76,6 +76,10 @@ struct TourHooks {
   //! Non-null and set: the tour stops before its next leg and is not found
   //! (the caller no longer needs it; see optimize/design.cpp).
   const std::atomic<bool>* cancel = nullptr;
+  //! Non-null and set while the constructor generates the goal poses: the
+  //! constructor throws hrs::Interrupted (the user asked to stop before the
+  //! first plan; see optimize/design.cpp).
+  const std::atomic<bool>* stop = nullptr;
   //! The caller's index of this tour, passed to the provider.
   int tour = 0;
 };

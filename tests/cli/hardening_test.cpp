@@ -4,14 +4,17 @@
 // (sequence enumeration, goal-pose generation) stay bounded.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <thread>
 
 #include "geometry/error.h"
 #include "geometry/scene.h"
+#include "optimize/design.h"
 #include "optimize/sequences.h"
 #include "planning/goals.h"
 
@@ -172,6 +175,70 @@ TEST(Hardening, ResourceBlowUpsAreBounded) {
   const auto goals = hrs::planning::local_goal_poses(s, s.objects[0]);
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - g0).count(), 10.0);
   EXPECT_LE(goals.size(), 256u);
+}
+
+// The long inner loops check a stop request (Ctrl-C of `hrspace design`):
+// set, they throw Interrupted and return nothing partial; unset, the results
+// are those of a run without a flag.
+TEST(Hardening, LongLoopsHonourAStopRequest) {
+  const Scene scene = parse_scene(bedroom().dump(), "bedroom.json");
+  const hrs::optimize::AoGraph graph(scene.activity);
+  std::atomic<bool> stop{false};
+  const auto plain = hrs::optimize::top_sequences(graph, "door", 3, 10);
+  const auto flagged = hrs::optimize::top_sequences(graph, "door", 3, 10, &stop);
+  ASSERT_EQ(plain.size(), flagged.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) {
+    EXPECT_EQ(plain[i].nodes, flagged[i].nodes);
+    EXPECT_EQ(plain[i].likelihood, flagged[i].likelihood);
+  }
+  const auto goals = hrs::planning::local_goal_poses(scene, scene.objects[0]);
+  const auto goals_flagged = hrs::planning::local_goal_poses(scene, scene.objects[0], {}, &stop);
+  ASSERT_EQ(goals.size(), goals_flagged.size());
+  for (std::size_t i = 0; i < goals.size(); ++i) {
+    EXPECT_EQ(goals[i].pose, goals_flagged[i].pose);
+    EXPECT_EQ(goals[i].slot, goals_flagged[i].slot);
+  }
+
+  stop.store(true);
+  EXPECT_THROW(hrs::optimize::top_sequences(graph, "door", 3, 10, &stop), hrs::Interrupted);
+  EXPECT_THROW(hrs::optimize::scene_sequences(scene, &stop), hrs::Interrupted);
+  EXPECT_THROW(hrs::planning::local_goal_poses(scene, scene.objects[0], {}, &stop),
+               hrs::Interrupted);
+  hrs::optimize::DesignOptions options;
+  options.iterations = 5;
+  EXPECT_THROW(hrs::optimize::design(scene, options, &stop), hrs::Interrupted);
+
+  // A stop request during an enumeration at the format's limits (100 nodes,
+  // 100 visits, M = 1000: seconds of work) ends it within a fraction of a
+  // second; the bound here is generous.
+  hrs::geometry::Activity act;
+  std::vector<std::string> ids;
+  for (int i = 0; i < 100; ++i) ids.push_back("o" + std::to_string(i));
+  for (const auto& to : ids) act.transitions["door"][to] = 1.0;
+  for (const auto& from : ids)
+    for (const auto& to : ids)
+      if (from != to) act.transitions[from][to] = 1.0;
+  const hrs::optimize::AoGraph big(act);
+  std::atomic<bool> late{false};
+  std::atomic<std::int64_t> set_at{0};
+  std::thread setter([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    set_at.store(std::chrono::steady_clock::now().time_since_epoch().count());
+    late.store(true);
+  });
+  bool interrupted = false;
+  try {
+    hrs::optimize::top_sequences(big, "door", 100, 1000, &late);
+  } catch (const hrs::Interrupted& e) {
+    interrupted = true;
+    EXPECT_EQ(std::string(e.what()), "sequence enumeration: interrupted");
+  }
+  const auto ended = std::chrono::steady_clock::now();
+  setter.join();
+  EXPECT_TRUE(interrupted);
+  const std::chrono::steady_clock::time_point asked{
+      std::chrono::steady_clock::duration(set_at.load())};
+  EXPECT_LT(std::chrono::duration<double>(ended - asked).count(), 10.0);
 }
 
 }  // namespace
