@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "api/operations.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "geometry/error.h"
@@ -245,8 +246,11 @@ int cmd_design(const Argv& argv) {
   const long iterations = args.integer("iterations", 700, 0, 100000000);
   const long designs = args.integer("designs", 1, 1, 1000);
   const long threads = args.integer("threads", 0, 0, 1024);
-  optimize::DesignOptions base_options;
-  apply_disable(args.get("disable"), base_options);
+  const std::optional<std::string> disable = args.get("disable");
+  {
+    optimize::DesignOptions check;  // refuse a bad --disable before any work
+    apply_disable(disable, check);
+  }
 
   const std::string path = args.positional()[0];
   geometry::Scene scene =
@@ -271,12 +275,11 @@ int cmd_design(const Argv& argv) {
   std::vector<std::string> svgs;
   bool interrupted = false;
   for (long d = 0; d < designs && !interrupted; ++d) {
-    optimize::DesignOptions options = base_options;
-    options.seed = static_cast<std::uint64_t>(seed + d);
-    options.iterations = static_cast<int>(iterations);
-    options.threads = static_cast<int>(threads);
-    options.proposed = reuse.has_value();
-    if (reuse) options.reuse = *reuse;
+    // The same options as the Python module's design() (api/operations.h).
+    optimize::DesignOptions options =
+        api::design_options(static_cast<std::uint64_t>(seed + d), static_cast<int>(iterations),
+                            static_cast<int>(threads), reuse);
+    apply_disable(disable, options);
     const auto progress = progress_bar(
         tty, iterations, designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
     optimize::DesignResult result;

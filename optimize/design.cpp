@@ -4,7 +4,9 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 
@@ -119,6 +121,35 @@ class TourRound {
   std::vector<planning::Tour>& tours() { return tours_; }
   //! Each tour's leg grades (optimize/costs.h; empty for found tours).
   const std::vector<std::vector<double>>& blockage() const { return blockage_; }
+  //! Objects graded walled off (grade > 0) in this round, index order.
+  std::vector<int> walled_stops() const {
+    std::vector<int> out;
+    for (std::size_t i = 0; i < grades_.size(); ++i)
+      if (grades_[i] > 0.0) out.push_back(static_cast<int>(i));
+    return out;
+  }
+  //! The stops where this round's unfound tours broke off (the target of
+  //! the first leg not joined), index order.
+  std::vector<int> failing_stops() {
+    std::vector<int> out;
+    for (std::size_t k = 0; k < tours_.size(); ++k) {
+      if (tours_[k].found) continue;
+      const auto& nodes = (*sequences_)[k].nodes;
+      const std::size_t at = static_cast<std::size_t>(std::max(0, tours_[k].stats.depth)) + 1;
+      if (at >= nodes.size()) continue;
+      const int object = work_.find_object(nodes[at]);
+      if (object >= 0 && std::find(out.begin(), out.end(), object) == out.end())
+        out.push_back(object);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  }
+  //! The layout changed outside plan(): the gate follows it.
+  void layout_changed() { gate_.invalidate(); }
+  //! Goal poses of object `index` in the current layout.
+  std::vector<planning::GoalPose> goals_of(int index) const {
+    return planners_.front()->goals_for(work_.objects[index].id);
+  }
   planning::ReusePlanner* reuse() { return reuse_.get(); }
 
   //! Plans round `iteration` in the current layout. `legs` gets the
@@ -211,6 +242,21 @@ class TourRound {
 
 namespace {
 
+//! Smallest vertex-to-edge distance between two polygons, either way (0
+//! when an edge of one crosses the other is not detected; an upper bound
+//! of the gap, enough to tell "near").
+double footprint_gap(const geometry::Polygon& a, const geometry::Polygon& b) {
+  double d = std::numeric_limits<double>::infinity();
+  for (int pass = 0; pass < 2; ++pass) {
+    const geometry::Polygon& p = pass == 0 ? a : b;
+    const geometry::Polygon& q = pass == 0 ? b : a;
+    for (const geometry::Vec2& v : p)
+      for (std::size_t e = 0; e < q.size(); ++e)
+        d = std::min(d, geometry::point_segment_distance(v, q[e], q[(e + 1) % q.size()]));
+  }
+  return d;
+}
+
 //! One design run (paper §III-E with the tours of §III-C): the annealer's
 //! callbacks on one object, each step a named member. run() is design().
 class DesignRun {
@@ -247,8 +293,12 @@ class DesignRun {
     throw_if_stopped(stop_, "design setup");
     plan_current();
     current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
-    focus_current_ = walling_objects();
     result_.initial = current_terms_;
+    if (unblock()) {
+      plan_current();  // the annealing starts from the unblocked layout
+      current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
+    }
+    focus_current_ = walling_objects();
     current_tours_ = tours_;
     const AnnealOptions schedule = make_schedule();
     std::mt19937_64 rng(options_.seed);
@@ -356,19 +406,132 @@ class DesignRun {
     return proposed_terms_.total();
   }
 
-  //! With `escape`, when a stop of an unfound tour is walled off from the
-  //! door (grade > 0), the movable objects bordering the door's reachable
-  //! region (within the chair's half length and 25 cm): the annealer's focus.
-  std::vector<int> walling_objects() const {
+  //! Beyond the paper (docs/optimize.md "Blocked layouts"): when stops are
+  //! walled off from the door in the input layout, a greedy search on the
+  //! free grid alone (no tour is planned, a few milliseconds a proposal)
+  //! moves the objects that wall them in (focus_for) until no stop of any
+  //! sequence is walled off, or after kUnblockProposals proposals. A
+  //! proposal (jump with a quarter turn, step, or quarter turn, each redrawn
+  //! until valid) is kept when the summed grade of the stops does not grow.
+  //! Returns true when the layout changed; the annealing starts from it.
+  bool unblock() {
+    static constexpr int kUnblockProposals = 300;
+    if (!options_.escape || !plan_every_iteration_) return false;
+    std::vector<int> stops;
+    for (const Sequence& s : sequences_)
+      for (std::size_t i = 1; i < s.nodes.size(); ++i) {
+        const int o = work_.find_object(s.nodes[i]);
+        if (o >= 0 && std::find(stops.begin(), stops.end(), o) == stops.end()) stops.push_back(o);
+      }
+    std::sort(stops.begin(), stops.end());
+    auto walled_now = [&](double& total) {
+      std::vector<int> walled;
+      total = 0.0;
+      for (int s : stops) {
+        const double b = round_.gate().blockage(round_.goals_of(s));
+        total += b;
+        if (b > 0.0) walled.push_back(s);
+      }
+      return walled;
+    };
+    double score = 0.0;
+    std::vector<int> walled = walled_now(score);
+    result_.unblock.walled_before = static_cast<int>(walled.size());
+    result_.unblock.walled_after = result_.unblock.walled_before;
+    if (walled.empty()) return false;
+    std::mt19937_64 rng(splitmix64(options_.seed ^ 0x756e'626c'6f63'6bULL));
+    const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
+    bool changed = false;
+    for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
+      if (stop_ && stop_->load()) break;
+      const std::vector<int> focus = focus_for(walled, true);
+      if (focus.empty()) break;
+      const int o = focus[uniform_index(rng, focus.size())];
+      const Pose2 from = work_.objects[o].pose;
+      const double kind = uniform01(rng);
+      Pose2 to = from;
+      bool valid = false;
+      for (int attempt = 0; attempt < 50 && !valid; ++attempt) {
+        to = from;
+        if (kind < 0.5) {
+          to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
+          to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
+          to.theta = geometry::wrap_angle(from.theta + std::floor(uniform01(rng) * 4.0) *
+                                                           (std::numbers::pi / 2));
+        } else if (kind < 0.75) {
+          to.x += 2.0 * uniform01(rng) - 1.0;
+          to.y += 2.0 * uniform01(rng) - 1.0;
+        } else {
+          to.theta = geometry::wrap_angle(from.theta + (uniform01(rng) < 0.5 ? 1 : -1) *
+                                                           (std::numbers::pi / 2));
+        }
+        std::vector<Pose2> p = poses_;
+        p[o] = to;
+        valid = move_valid(p, o);
+      }
+      ++result_.unblock.proposals;
+      if (!valid) continue;
+      work_.objects[o].pose = to;
+      cspace_.move_object(o, to);
+      round_.layout_changed();
+      double next = 0.0;
+      std::vector<int> now = walled_now(next);
+      if (next <= score) {
+        score = next;
+        walled = std::move(now);
+        poses_[o] = to;
+        changed = true;
+        ++result_.unblock.accepted;
+      } else {
+        work_.objects[o].pose = from;
+        cspace_.move_object(o, from);
+        round_.layout_changed();
+      }
+    }
+    result_.unblock.walled_after = static_cast<int>(walled.size());
+    return changed;
+  }
+
+  //! The annealer's focus, with `escape`, when tours are unfound: the
+  //! objects that most likely stand between the door and the stops it
+  //! misses. When stops are walled off in the free grid (grade > 0): the
+  //! movable objects that border the door's reachable region (within the
+  //! chair's half length + 25 cm) and are such a stop or lie within
+  //! kFocusReach of one of their goal poses. Otherwise (the grid joins
+  //! everything, the car still fails: a turn too tight, a gap the grid's
+  //! margin lets through): the movable stops where unfound tours broke off
+  //! and the movable objects within kFocusReach of their goal poses.
+  std::vector<int> walling_objects() {
+    if (!options_.escape) return {};
+    const std::vector<int> walled = round_.walled_stops();
+    if (!walled.empty()) return focus_for(walled, true);
+    return focus_for(round_.failing_stops(), false);
+  }
+
+  //! The movable objects near `stops` (see walling_objects()); `in_grid`:
+  //! only those bordering the door's reachable region.
+  std::vector<int> focus_for(const std::vector<int>& stops, bool in_grid) {
+    static constexpr double kFocusReach = 2.0;  // metres
     std::vector<int> out;
-    if (!options_.escape) return out;
-    bool walled = false;
-    for (const auto& grades : round_.blockage())
-      for (double b : grades) walled = walled || b > 0.0;
-    if (!walled) return out;
-    const double within = 0.5 * scene_.wheelchair.length + 0.25;
-    for (int i : round_.gate().bordering(within))
-      if (movable_[i]) out.push_back(i);
+    if (stops.empty()) return out;
+    // The stops' footprints: a stop whose goal poses are all covered (by
+    // what walls it in) has no free goal pose to measure from.
+    std::vector<geometry::Polygon> targets;
+    for (int s : stops) targets.push_back(geometry::world_footprint(work_.objects[s]));
+    std::vector<int> candidates;
+    if (in_grid) {
+      candidates = round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25);
+    } else {
+      for (int i = 0; i < static_cast<int>(movable_.size()); ++i) candidates.push_back(i);
+    }
+    for (int i : candidates) {
+      if (!movable_[i]) continue;
+      bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
+      const geometry::Polygon fp = geometry::world_footprint(work_.objects[i]);
+      for (const geometry::Polygon& t : targets)
+        near = near || footprint_gap(fp, t) <= kFocusReach;
+      if (near) out.push_back(i);
+    }
     return out;
   }
 

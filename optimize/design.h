@@ -110,6 +110,12 @@ struct DesignResult {
     double saved_s_estimate = 0.0;
   } early;
   int tours_planned = 0;     //!< tours planned to the end (all rounds)
+  //! The unblocking before the annealing (docs/optimize.md "Blocked
+  //! layouts"): stops walled off from the door before and after, proposals
+  //! made and kept (all 0 when nothing was walled off).
+  struct Unblock {
+    int walled_before = 0, walled_after = 0, proposals = 0, accepted = 0;
+  } unblock;
   long legs_refused = 0;     //!< legs the free grid proved impossible
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
   double gate_ms = 0.0;          //!< their total time
