@@ -227,7 +227,7 @@ std::string report_document(const DesignResult& result, const RunInfo& info) {
        {{"proposals", result.early.proposals},
         {"tours_skipped", result.early.tours_skipped},
         {"legs_skipped", result.early.legs_skipped},
-        {"planning_s_saved_estimate", result.early.saved_s_estimate}}},
+        {"planning_saved_estimate_s", result.early.saved_s_estimate}}},
       {"unblock",
        {{"walled_before", result.unblock.walled_before},
         {"walled_after", result.unblock.walled_after},
