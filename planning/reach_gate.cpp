@@ -67,6 +67,15 @@ double ReachGate::blockage(std::span<const GoalPose> goals) const {
   return 0.5 + 0.5 * std::min(1.0, d / diagonal_);
 }
 
+bool ReachGate::walls_off(std::span<const GoalPose> goals) const {
+  if (goals.empty()) return true;
+  const geometry::ReachableSet* reach = door_reach();
+  if (!reach || !reach->contains(door_)) return false;
+  for (const GoalPose& g : goals)
+    if (reach->contains(g.pose)) return false;
+  return true;
+}
+
 std::vector<int> ReachGate::bordering(double within) const {
   std::vector<int> out;
   const geometry::ReachableSet* reach = door_reach();

@@ -66,6 +66,10 @@ class ReachGate {
   //! and D the diagonal of the room's bounding box; 1 when no goal pose is
   //! free or the grid is unavailable.
   double blockage(std::span<const GoalPose> goals) const;
+  //! True when no tour can reach a stop with free goal poses `goals`
+  //! (certified): there are none, or the door's start is free and reaches
+  //! none of them in the grid. False when unknown (grid unavailable).
+  bool walls_off(std::span<const GoalPose> goals) const;
 
   //! Objects whose footprint comes within `within` metres (in the plane) of
   //! the door's reachable region: the walls of the door's pocket when the

