@@ -444,9 +444,11 @@ class DesignRun {
       // The baseline's legs are costly enough to pay for a grid fill before
       // any of them: tours the grid proves unfound bound the cost from below.
       // (Not for the proposed planner: its typical layout costs about as
-      // much as a fill.)
+      // much as a fill. With every technique off it is the baseline, and
+      // bounds like it, so that both give the same trace.)
       std::vector<double> floors;
-      if (!options_.proposed && options_.refuse_impossible) {
+      const bool baseline_like = !options_.proposed || !options_.reuse.any();
+      if (baseline_like && options_.refuse_impossible) {
         const auto f0 = Clock::now();
         floors = round_.certain_floors(model_);
         planning_ms_ = 1e3 * seconds_since(f0);  // planning work: counted as such
