@@ -13,7 +13,7 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
-#include "optimize/thread_pool.h"
+#include "optimize/tour_round.h"
 #include "planning/motion_validator.h"
 
 namespace hrs::optimize {
@@ -55,239 +55,6 @@ std::string layout_violation(const geometry::Scene& scene) {
   }
   return "";
 }
-
-namespace {
-
-//! The M tours of one layout, planned in parallel (baseline or proposed):
-//! shared by design() and replay_planning().
-//!
-//! Early rejection (docs/optimize.md): given a Bound, tours are started in
-//! index order and, as each finishes, the longest finished prefix of tours
-//! adds its cost to the bound; once the Acceptance rejects the bound, no
-//! further tour starts and the running ones stop at their next leg. The
-//! prefix at which that happens depends only on the tours' outcomes, never
-//! on the threads, and the proposed planner keeps only the work of that
-//! prefix (ReusePlanner::end_iteration), so runs stay identical for any
-//! thread count.
-class TourRound {
- public:
-  //! Cost of the tours planned so far, and the decision that ends a round.
-  struct Bound {
-    const CostModel* model;
-    double base;  //!< the cost known before planning (the interior terms)
-    const Acceptance* acceptance;
-    //! Per tour, a lower bound of its cost before it is planned (may be
-    //! null: 0); see certain_floors().
-    const std::vector<double>* floors = nullptr;
-  };
-  struct Outcome {
-    int dropped = 0;          //!< kept tours that the re-certification dropped
-    int kept = 0;             //!< tours planned to the end and counted
-    bool rejected = false;    //!< the bound was rejected after `kept` tours
-    double bound = 0.0;       //!< base + the kept tours' costs
-  };
-
-  //! `stop` (may be null): checked while the planners generate their goal
-  //! poses (hrs::Interrupted once set).
-  TourRound(const geometry::Scene& scene, const DesignOptions& options,
-            const std::vector<Sequence>& sequences, const std::atomic<bool>* stop = nullptr)
-      : work_(scene),
-        cspace_(work_, options.cspace),
-        gate_(work_, cspace_, options.gate),
-        options_(options),
-        sequences_(&sequences),
-        pool_(options.threads),
-        tours_(sequences.size()),
-        invalidated_(sequences.size(), 0),
-        blockage_(sequences.size()),
-        finished_(sequences.size(), 0) {
-    if (options.proposed) {
-      reuse_ = std::make_unique<planning::ReusePlanner>(work_, cspace_, options.tour, options.reuse,
-                                                        options.seed);
-      if (options.refuse_impossible) reuse_->set_gate(&gate_);
-    }
-    planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
-    if (!reuse_ && options.refuse_impossible) hooks.gate = &gate_;
-    hooks.cancel = &cancel_;
-    hooks.stop = stop;
-    for (std::size_t k = 0; k < sequences.size(); ++k) {
-      hooks.tour = static_cast<int>(k);
-      planners_.push_back(std::make_unique<planning::TourPlanner>(
-          work_, cspace_, options.tour, tour_seed(options.seed, 0, static_cast<int>(k)), hooks));
-    }
-  }
-
-  geometry::Scene& work() { return work_; }
-  geometry::CSpace& cspace() { return cspace_; }
-  const planning::ReachGate& gate() const { return gate_; }
-  int threads() const { return pool_.size(); }
-  std::vector<planning::Tour>& tours() { return tours_; }
-  //! Each tour's leg grades (optimize/costs.h; empty for found tours).
-  const std::vector<std::vector<double>>& blockage() const { return blockage_; }
-  //! Objects graded walled off (grade > 0) in this round, index order.
-  std::vector<int> walled_stops() const {
-    std::vector<int> out;
-    for (std::size_t i = 0; i < grades_.size(); ++i)
-      if (grades_[i] > 0.0) out.push_back(static_cast<int>(i));
-    return out;
-  }
-  //! The stops where this round's unfound tours broke off (the target of
-  //! the first leg not joined), index order.
-  std::vector<int> failing_stops() {
-    std::vector<int> out;
-    for (std::size_t k = 0; k < tours_.size(); ++k) {
-      if (tours_[k].found) continue;
-      const auto& nodes = (*sequences_)[k].nodes;
-      const std::size_t at = static_cast<std::size_t>(std::max(0, tours_[k].stats.depth)) + 1;
-      if (at >= nodes.size()) continue;
-      const int object = work_.find_object(nodes[at]);
-      if (object >= 0 && std::find(out.begin(), out.end(), object) == out.end())
-        out.push_back(object);
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-  //! The layout changed outside plan(): the gate follows it.
-  void layout_changed() { gate_.invalidate(); }
-  //! Goal poses of object `index` in the current layout.
-  std::vector<planning::GoalPose> goals_of(int index) const {
-    return planners_.front()->goals_for(work_.objects[index].id);
-  }
-  planning::ReusePlanner* reuse() { return reuse_.get(); }
-
-  //! Plans round `iteration` in the current layout. `legs` gets the
-  //! proposed planner's counts; `bound` (may be null) enables early rejection.
-  Outcome plan(int iteration, std::optional<planning::ReuseCounters>& legs,
-               const Bound* bound = nullptr) {
-    const int m = static_cast<int>(tours_.size());
-    if (!prepared_) {
-      gate_.invalidate();
-      grades_.assign(work_.objects.size(), -1.0);
-    }
-    prepared_ = false;
-    cancel_.store(false);
-    std::fill(finished_.begin(), finished_.end(), 0);
-    Outcome out;
-    out.kept = m;
-    out.bound = bound ? bound->base : 0.0;
-    if (bound && bound->floors)
-      for (double f : *bound->floors) out.bound += f;
-    int prefix = 0;
-    // The proposed planner's legs derive from (seed, iteration), not the tour.
-    if (reuse_) reuse_->begin_iteration(tour_seed(options_.seed, iteration, m));
-    pool_.run(m, [&](int k) {
-      if (cancel_.load()) return;  // the layout is rejected: not started
-      planners_[k]->set_seed(tour_seed(options_.seed, iteration, k));
-      tours_[k] = planners_[k]->plan((*sequences_)[k].nodes);
-      invalidated_[k] = planning::recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k],
-                                               reuse_ ? reuse_->measures() : nullptr)
-                            ? 0
-                            : 1;
-      grade(k);
-      if (!bound) return;
-      std::lock_guard lock(mutex_);
-      finished_[k] = 1;
-      while (!out.rejected && prefix < m && finished_[prefix]) {
-        out.bound += bound->model->tour_total(prefix, tours_[prefix], blockage_[prefix]);
-        if (bound->floors) out.bound -= (*bound->floors)[prefix];
-        ++prefix;
-        if (bound->acceptance->rejects(out.bound)) {
-          out.rejected = true;
-          out.kept = prefix;
-          cancel_.store(true);
-        }
-      }
-    });
-    if (reuse_) legs = reuse_->end_iteration(out.kept);
-    for (int k = 0; k < out.kept; ++k) out.dropped += invalidated_[k];
-    return out;
-  }
-
- private:
-  //! Fills blockage_[k]: for an unfound tour, the grade of each leg's stop
-  //! (computed once per object and round); empty otherwise.
-  void grade(int k) {
-    blockage_[k].clear();
-    if (tours_[k].found || !options_.escape) return;
-    blockage_[k] = stop_grades(k);
-  }
-
-  //! The grade of each stop of tour k's sequence (computed once per object
-  //! and round; 1 for a node that is not an object).
-  std::vector<double> stop_grades(int k) {
-    std::vector<double> out;
-    const auto& nodes = (*sequences_)[k].nodes;
-    for (std::size_t i = 1; i < nodes.size(); ++i) {
-      const int object = work_.find_object(nodes[i]);
-      if (object < 0) {
-        out.push_back(1.0);
-        continue;
-      }
-      double b;
-      {
-        std::lock_guard lock(mutex_);
-        b = grades_[object];
-      }
-      if (b < 0.0) {
-        b = gate_.blockage(planners_[k]->goals_for(nodes[i]));
-        std::lock_guard lock(mutex_);
-        grades_[object] = b;
-      }
-      out.push_back(b);
-    }
-    return out;
-  }
-
- public:
-  //! Per tour, a lower bound of its cost in the current layout known before
-  //! planning: a tour with a stop the gate certifies unreachable
-  //! (ReachGate::walls_off) is unfound, with at most the legs before that
-  //! stop joined, so it costs at least tour_total() of an unfound tour of
-  //! that depth with the same grades; other tours: 0. Starts the round
-  //! (the next plan() keeps the gate's fill and the grades).
-  std::vector<double> certain_floors(const CostModel& model) {
-    gate_.invalidate();
-    grades_.assign(work_.objects.size(), -1.0);
-    prepared_ = true;
-    std::vector<double> floors(tours_.size(), 0.0);
-    for (std::size_t k = 0; k < tours_.size(); ++k) {
-      const auto& nodes = (*sequences_)[k].nodes;
-      for (std::size_t i = 1; i < nodes.size(); ++i) {
-        const int object = work_.find_object(nodes[i]);
-        if (object < 0 || !gate_.walls_off(planners_[k]->goals_for(nodes[i]))) continue;
-        planning::Tour unfound;
-        unfound.found = false;
-        unfound.stats.depth = static_cast<int>(i) - 1;
-        const std::vector<double> grades =
-            options_.escape ? stop_grades(static_cast<int>(k)) : std::vector<double>{};
-        floors[k] = model.tour_total(static_cast<int>(k), unfound, grades);
-        break;
-      }
-    }
-    return floors;
-  }
-
- private:
-
-  geometry::Scene work_;  // poses follow the annealer's current layout
-  geometry::CSpace cspace_;
-  planning::ReachGate gate_;
-  DesignOptions options_;
-  const std::vector<Sequence>* sequences_;
-  std::unique_ptr<planning::ReusePlanner> reuse_;
-  std::vector<std::unique_ptr<planning::TourPlanner>> planners_;
-  ThreadPool pool_;
-  std::vector<planning::Tour> tours_;
-  std::vector<int> invalidated_;
-  std::vector<std::vector<double>> blockage_;
-  std::vector<char> finished_;
-  std::vector<double> grades_;  //!< per object this round (−1: not yet)
-  bool prepared_ = false;       //!< certain_floors() started this round
-  std::atomic<bool> cancel_{false};
-  std::mutex mutex_;
-};
-
-}  // namespace
 
 namespace {
 
@@ -432,8 +199,8 @@ class DesignRun {
     }
     if (options_.early_reject) {
       const InteriorCosts in = model_.interior(p);
-      const double base = scene_.weights.interior[0] * in.distance +
-                          scene_.weights.interior[1] * in.rotation;
+      const double base =
+          scene_.weights.interior[0] * in.distance + scene_.weights.interior[1] * in.rotation;
       if (acceptance.rejects(base)) {
         // Rejected on the interior alone: no tour is planned.
         rejected_early_ = true;
@@ -473,7 +240,6 @@ class DesignRun {
       plan_current();
     }
     proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage());
-    focus_proposed_ = walling_objects();
     return proposed_terms_.total();
   }
 
@@ -533,8 +299,8 @@ class DesignRun {
           to.x += 2.0 * uniform01(rng) - 1.0;
           to.y += 2.0 * uniform01(rng) - 1.0;
         } else {
-          to.theta = geometry::wrap_angle(from.theta + (uniform01(rng) < 0.5 ? 1 : -1) *
-                                                           (std::numbers::pi / 2));
+          to.theta = geometry::wrap_angle(from.theta +
+                                          (uniform01(rng) < 0.5 ? 1 : -1) * (std::numbers::pi / 2));
         }
         std::vector<Pose2> p = poses_;
         p[o] = to;
@@ -599,8 +365,7 @@ class DesignRun {
       if (!movable_[i]) continue;
       bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
       const geometry::Polygon fp = geometry::world_footprint(work_.objects[i]);
-      for (const geometry::Polygon& t : targets)
-        near = near || footprint_gap(fp, t) <= kFocusReach;
+      for (const geometry::Polygon& t : targets) near = near || footprint_gap(fp, t) <= kFocusReach;
       if (near) out.push_back(i);
     }
     return out;
@@ -646,7 +411,9 @@ class DesignRun {
     if (e.accepted) {
       current_terms_ = proposed_terms_;
       current_tours_ = tours_;
-      focus_current_ = focus_proposed_;
+      // Right after the decision the round's tours and grades are still the
+      // accepted layout's: the focus is computed for accepted layouts only.
+      focus_current_ = plan_every_iteration_ ? walling_objects() : std::vector<int>{};
     }
     result_.trace.push_back(step);
     if (progress_) progress_(step);
@@ -682,8 +449,8 @@ class DesignRun {
     result_.gate_fills = round_.gate().fills();
     result_.gate_ms = round_.gate().fill_ms();
     if (result_.tours_planned > 0)
-      result_.early.saved_s_estimate = result_.early.tours_skipped * result_.time_planning_s /
-                                       result_.tours_planned;
+      result_.early.saved_s_estimate =
+          result_.early.tours_skipped * result_.time_planning_s / result_.tours_planned;
     if (planning::ReusePlanner* reuse = round_.reuse()) {
       result_.legs_refused = static_cast<long>(reuse->totals().legs_proven);
       result_.reuse = options_.reuse.names();
@@ -704,7 +471,7 @@ class DesignRun {
   std::vector<planning::Tour>& tours_;
   std::vector<Pose2> poses_;
   std::vector<bool> movable_;
-  std::vector<int> focus_current_, focus_proposed_;  //!< walling_objects() of the layouts
+  std::vector<int> focus_current_;  //!< walling_objects() of the current layout
   bool plan_every_iteration_ = true;
   int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
   double planning_ms_ = 0.0;

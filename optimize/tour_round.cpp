@@ -1,0 +1,163 @@
+// One planning round of a design run; see tour_round.h.
+
+#include "optimize/tour_round.h"
+
+#include <algorithm>
+
+#include "planning/recheck.h"
+
+namespace hrs::optimize {
+
+TourRound::TourRound(const geometry::Scene& scene, const DesignOptions& options,
+                     const std::vector<Sequence>& sequences, const std::atomic<bool>* stop)
+    : work_(scene),
+      cspace_(work_, options.cspace),
+      gate_(work_, cspace_, options.gate),
+      options_(options),
+      sequences_(&sequences),
+      pool_(options.threads),
+      tours_(sequences.size()),
+      invalidated_(sequences.size(), 0),
+      blockage_(sequences.size()),
+      finished_(sequences.size(), 0) {
+  if (options.proposed) {
+    reuse_ = std::make_unique<planning::ReusePlanner>(work_, cspace_, options.tour, options.reuse,
+                                                      options.seed);
+    if (options.refuse_impossible) reuse_->set_gate(&gate_);
+  }
+  planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
+  if (!reuse_ && options.refuse_impossible) hooks.gate = &gate_;
+  hooks.cancel = &cancel_;
+  hooks.stop = stop;
+  for (std::size_t k = 0; k < sequences.size(); ++k) {
+    hooks.tour = static_cast<int>(k);
+    planners_.push_back(std::make_unique<planning::TourPlanner>(
+        work_, cspace_, options.tour, tour_seed(options.seed, 0, static_cast<int>(k)), hooks));
+  }
+}
+
+std::vector<int> TourRound::walled_stops() const {
+  std::vector<int> out;
+  for (std::size_t i = 0; i < grades_.size(); ++i)
+    if (grades_[i] > 0.0) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+std::vector<int> TourRound::failing_stops() {
+  std::vector<int> out;
+  for (std::size_t k = 0; k < tours_.size(); ++k) {
+    if (tours_[k].found) continue;
+    const auto& nodes = (*sequences_)[k].nodes;
+    const std::size_t at = static_cast<std::size_t>(std::max(0, tours_[k].stats.depth)) + 1;
+    if (at >= nodes.size()) continue;
+    const int object = work_.find_object(nodes[at]);
+    if (object >= 0 && std::find(out.begin(), out.end(), object) == out.end())
+      out.push_back(object);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::vector<planning::GoalPose> TourRound::goals_of(int index) const {
+  return planners_.front()->goals_for(work_.objects[index].id);
+}
+
+TourRound::Outcome TourRound::plan(int iteration, std::optional<planning::ReuseCounters>& legs,
+                                   const Bound* bound) {
+  const int m = static_cast<int>(tours_.size());
+  if (!prepared_) {
+    gate_.invalidate();
+    grades_.assign(work_.objects.size(), -1.0);
+  }
+  prepared_ = false;
+  cancel_.store(false);
+  std::fill(finished_.begin(), finished_.end(), 0);
+  Outcome out;
+  out.kept = m;
+  out.bound = bound ? bound->base : 0.0;
+  if (bound && bound->floors)
+    for (double f : *bound->floors) out.bound += f;
+  int prefix = 0;
+  // The proposed planner's legs derive from (seed, iteration), not the tour.
+  if (reuse_) reuse_->begin_iteration(tour_seed(options_.seed, iteration, m));
+  pool_.run(m, [&](int k) {
+    if (cancel_.load()) return;  // the layout is rejected: not started
+    planners_[k]->set_seed(tour_seed(options_.seed, iteration, k));
+    tours_[k] = planners_[k]->plan((*sequences_)[k].nodes);
+    invalidated_[k] = planning::recheck_tour(cspace_, work_.wheelchair.turning_radius, tours_[k],
+                                             reuse_ ? reuse_->measures() : nullptr)
+                          ? 0
+                          : 1;
+    grade(k);
+    if (!bound) return;
+    std::lock_guard lock(mutex_);
+    finished_[k] = 1;
+    while (!out.rejected && prefix < m && finished_[prefix]) {
+      out.bound += bound->model->tour_total(prefix, tours_[prefix], blockage_[prefix]);
+      if (bound->floors) out.bound -= (*bound->floors)[prefix];
+      ++prefix;
+      if (bound->acceptance->rejects(out.bound)) {
+        out.rejected = true;
+        out.kept = prefix;
+        cancel_.store(true);
+      }
+    }
+  });
+  if (reuse_) legs = reuse_->end_iteration(out.kept);
+  for (int k = 0; k < out.kept; ++k) out.dropped += invalidated_[k];
+  return out;
+}
+
+void TourRound::grade(int k) {
+  blockage_[k].clear();
+  if (tours_[k].found || !options_.escape) return;
+  blockage_[k] = stop_grades(k);
+}
+
+std::vector<double> TourRound::stop_grades(int k) {
+  std::vector<double> out;
+  const auto& nodes = (*sequences_)[k].nodes;
+  for (std::size_t i = 1; i < nodes.size(); ++i) {
+    const int object = work_.find_object(nodes[i]);
+    if (object < 0) {
+      out.push_back(1.0);
+      continue;
+    }
+    double b;
+    {
+      std::lock_guard lock(mutex_);
+      b = grades_[object];
+    }
+    if (b < 0.0) {
+      b = gate_.blockage(planners_[k]->goals_for(nodes[i]));
+      std::lock_guard lock(mutex_);
+      grades_[object] = b;
+    }
+    out.push_back(b);
+  }
+  return out;
+}
+
+std::vector<double> TourRound::certain_floors(const CostModel& model) {
+  gate_.invalidate();
+  grades_.assign(work_.objects.size(), -1.0);
+  prepared_ = true;
+  std::vector<double> floors(tours_.size(), 0.0);
+  for (std::size_t k = 0; k < tours_.size(); ++k) {
+    const auto& nodes = (*sequences_)[k].nodes;
+    for (std::size_t i = 1; i < nodes.size(); ++i) {
+      const int object = work_.find_object(nodes[i]);
+      if (object < 0 || !gate_.walls_off(planners_[k]->goals_for(nodes[i]))) continue;
+      planning::Tour unfound;
+      unfound.found = false;
+      unfound.stats.depth = static_cast<int>(i) - 1;
+      const std::vector<double> grades =
+          options_.escape ? stop_grades(static_cast<int>(k)) : std::vector<double>{};
+      floors[k] = model.tour_total(static_cast<int>(k), unfound, grades);
+      break;
+    }
+  }
+  return floors;
+}
+
+}  // namespace hrs::optimize
