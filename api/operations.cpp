@@ -4,6 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "api/reuse_list.h"
 #include "geometry/error.h"
 #include "geometry/free_grid.h"
 #include "geometry/polygon_ops.h"
@@ -23,8 +24,8 @@ std::optional<planning::ReuseOptions> choose_planner(const std::string& planner,
   if (planner == "baseline") return std::nullopt;
   const std::string list = reuse.value_or(rule.fallback);
   const std::string allowed = rule.allowed;
-  planning::ReuseOptions o = planning::ReuseOptions::parse(list);
-  const planning::ReuseOptions ok = planning::ReuseOptions::parse(allowed);
+  planning::ReuseOptions o = parse_reuse(list);
+  const planning::ReuseOptions ok = parse_reuse(allowed);
   planning::ReuseOptions extra = planning::ReuseOptions::none();
   for (const auto& t : planning::ReuseOptions::techniques()) extra.*t.on = o.*t.on && !(ok.*t.on);
   if (extra.any())

@@ -18,7 +18,7 @@
 namespace hrs::api {
 
 //! The reuse techniques one operation accepts, and the ones it uses when the
-//! caller names none (the --reuse syntax of planning::ReuseOptions::parse).
+//! caller names none (the --reuse syntax of api::parse_reuse).
 struct ReuseRule {
   const char* allowed;
   const char* fallback;

@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "api/reuse_list.h"
 #include "bench/bench_util.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
@@ -55,7 +56,7 @@ void replay(benchmark::State& state, const Recording* rec, const std::string& co
       o.seed = s + 1;
       o.threads = threads;
       o.proposed = config != "baseline";
-      if (o.proposed) o.reuse = planning::ReuseOptions::parse(config);
+      if (o.proposed) o.reuse = api::parse_reuse(config);
       const optimize::ReplayResult r = optimize::replay_planning(rec->scene, rec->runs[s], o);
       planning += r.planning_s;
       found += r.tours_found;

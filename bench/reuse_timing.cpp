@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "api/reuse_list.h"
 #include "bench/bench_util.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
@@ -100,7 +101,7 @@ int main(int argc, char** argv) {
         o.iterations = iterations;
         o.threads = threads;
         o.proposed = config != "baseline";
-        if (o.proposed) o.reuse = planning::ReuseOptions::parse(config);
+        if (o.proposed) o.reuse = api::parse_reuse(config);
         const optimize::DesignResult r = optimize::design(scene, o);
         const auto& c = r.counters;
         csv << room << ",\"" << config << "\"," << seed << ',' << iterations << ',' << r.threads

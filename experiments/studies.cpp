@@ -8,6 +8,7 @@
 #include <random>
 #include <set>
 
+#include "api/reuse_list.h"
 #include "experiments/runner.h"
 #include "experiments/stats.h"
 #include "experiments/study.h"
@@ -33,7 +34,7 @@ namespace {
 //! The planners the studies compare.
 struct PlannerSpec {
   const char* name;
-  const char* reuse;  //!< nullptr: the baseline RRT; else ReuseOptions::parse list
+  const char* reuse;  //!< nullptr: the baseline RRT; else api::parse_reuse list
   bool literal;       //!< the paper's literal baseline: tried goal nodes are not skipped
   const char* what;
 };
@@ -88,7 +89,7 @@ optimize::DesignOptions design_options(const StudyConfig& config, const std::str
   o.iterations = config.iterations;
   o.threads = config.threads;
   o.proposed = p.reuse != nullptr;
-  if (p.reuse) o.reuse = planning::ReuseOptions::parse(p.reuse);
+  if (p.reuse) o.reuse = api::parse_reuse(p.reuse);
   if (p.literal) o.tour.planner.skip_tried_goal_nodes = false;
   return o;
 }

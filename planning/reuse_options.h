@@ -1,8 +1,8 @@
 #pragma once
 // The proposed planner's switches (paper §V and our additions): which reuse
-// techniques are on and their parameters, with the --reuse list syntax
-// (parse/names) that the command line, the experiments and the benchmarks
-// share. All techniques off is the baseline planner exactly.
+// techniques are on and their parameters, and their names (names(), which
+// reports print; the --reuse text is parsed in api/reuse_list.h). All
+// techniques off is the baseline planner exactly.
 
 #include <array>
 #include <string>
@@ -98,7 +98,7 @@ struct ReuseOptions {
     bool ReuseOptions::*on;
   };
   //! Every technique, in the order names() lists them: the one list that
-  //! parse(), names(), any() and none() go through.
+  //! api::parse_reuse(), names(), any() and none() go through.
   static const std::array<Technique, 11>& techniques();
   //! A technique's numeric parameter, set by NAME=N (budget=500, backoff=10).
   struct Parameter {
@@ -113,14 +113,8 @@ struct ReuseOptions {
   bool any() const;
   //! Every technique off.
   static ReuseOptions none();
-  //! Parses "none" or a comma list of samples, steering, paths, trees,
-  //! failures, shortcuts, budget, metrics, backoff, proofs and "all" (every technique on by
-  //! default, i.e. all but proofs), applied left to right: a name turns its
-  //! technique on, -name turns it off ("all,-budget"), NAME=N turns it on
-  //! with parameter N (budget=500, backoff=10). hrs::InputError for any
-  //! other item.
-  static ReuseOptions parse(std::string_view list);
-  //! The comma list of the techniques on ("none" when none).
+  //! The comma list of the techniques on ("none" when none), with NAME=N
+  //! where a parameter differs from its default (the --reuse syntax).
   std::string names() const;
 };
 

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "api/reuse_list.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
 #include "optimize/design_io.h"
@@ -28,7 +29,7 @@ DesignResult run(const geometry::Scene& s, bool proposed, const std::string& reu
   o.iterations = iterations;
   o.threads = threads;
   o.proposed = proposed;
-  o.reuse = planning::ReuseOptions::parse(reuse);
+  o.reuse = api::parse_reuse(reuse);
   return design(s, o);
 }
 

@@ -8,6 +8,7 @@
 #include <map>
 
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <random>
 #include <span>
@@ -51,42 +52,11 @@ geometry::Scene moved_scene(geometry::Scene scene, const Pose2& t) {
   return scene;
 }
 
-TEST(ReuseOptions, ParsesTechniqueLists) {
-  EXPECT_TRUE(ReuseOptions::parse("all").any());
-  EXPECT_FALSE(ReuseOptions::parse("none").any());
-  const ReuseOptions o = ReuseOptions::parse("paths,trees");
-  EXPECT_TRUE(o.paths && o.trees);
-  EXPECT_FALSE(o.samples || o.steering || o.failures || o.shortcuts);
-  EXPECT_TRUE(ReuseOptions::parse("shortcuts").shortcuts);
-  EXPECT_EQ(o.names(), "paths,trees");
-  EXPECT_EQ(ReuseOptions::none().names(), "none");
-  EXPECT_THROW(ReuseOptions::parse("paths,bogus"), InputError);
-  // "all" is every default technique (budget, backoff and proofs are
-  // opt-in); -name turns one off, left to right.
-  EXPECT_EQ(ReuseOptions::parse("all").names(),
-            "samples,steering,paths,trees,failures,shortcuts,metrics,speculate");
-  EXPECT_EQ(ReuseOptions::parse("all,-trees").names(),
-            "samples,steering,paths,failures,shortcuts,metrics,speculate");
-  EXPECT_EQ(ReuseOptions::parse("all,budget").names(),
-            "samples,steering,paths,trees,failures,shortcuts,budget,metrics,speculate");
-  EXPECT_EQ(ReuseOptions::parse("metrics").names(), "metrics");
-  EXPECT_EQ(ReuseOptions::parse("all,-trees,trees").names(), ReuseOptions::parse("all").names());
-  EXPECT_EQ(ReuseOptions::parse("budget").names(), "budget");
-  EXPECT_TRUE(ReuseOptions::parse("budget").any());
-  EXPECT_FALSE(ReuseOptions::parse("budget,-budget").any());
-  EXPECT_THROW(ReuseOptions::parse("all,-bogus"), InputError);
-  EXPECT_THROW(ReuseOptions::parse("-all"), InputError);
-  const ReuseOptions b = ReuseOptions::parse("all,budget=800");
-  EXPECT_TRUE(b.budget);
-  EXPECT_EQ(b.budget_iterations, 800);
-  EXPECT_EQ(ReuseOptions::parse(b.names()).budget_iterations, 800);  // names() round-trips
-  const ReuseOptions f = ReuseOptions::parse("all,-backoff,backoff=25");
-  EXPECT_TRUE(f.backoff);
-  EXPECT_EQ(f.backoff_floor, 25);
-  EXPECT_EQ(ReuseOptions::parse(f.names()).backoff_floor, 25);
-  for (const char* bad : {"budget=", "budget=0", "budget=-5", "budget=12x", "budget=2000000",
-                          "backoff=", "backoff=0", "samples=3", "-budget=5"})
-    EXPECT_THROW(ReuseOptions::parse(bad), InputError) << bad;
+//! The options with only the techniques `on` switched on.
+ReuseOptions only(std::initializer_list<bool ReuseOptions::*> on) {
+  ReuseOptions o = ReuseOptions::none();
+  for (bool ReuseOptions::*t : on) o.*t = true;
+  return o;
 }
 
 TEST(DecompositionSampler, SamplesLieInTheRoomBox) {
@@ -274,10 +244,10 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
   for (const std::string file : {"office.json", "living_room.json", "bedroom.json"}) {
     geometry::Scene work = test_support::shipped_scene(file);
     geometry::CSpace cspace(work);
-    ReuseOptions off = ReuseOptions::parse("all");
+    ReuseOptions off = ReuseOptions{};
     off.skip_far_checks = false;
-    ASSERT_TRUE(ReuseOptions::parse("all").skip_far_checks);
-    ReusePlanner with(work, cspace, {}, ReuseOptions::parse("all"), 3);
+    ASSERT_TRUE(ReuseOptions{}.skip_far_checks);
+    ReusePlanner with(work, cspace, {}, ReuseOptions{}, 3);
     ReusePlanner without(work, cspace, {}, off, 3);
     LegPlanner pw(work, cspace, {}, with.hooks().planner);
     LegPlanner po(work, cspace, {}, without.hooks().planner);
@@ -365,7 +335,7 @@ TEST(ReusePlanner, SkippedChecksChangeNoOutcome) {
 TEST(ReusePlanner, SameKeySameOutcomeAndUnchangedLayoutIsServedFromTheDatabase) {
   const geometry::Scene scene = test_support::shipped_scene("living_room.json");
   const geometry::CSpace cspace(scene);
-  ReusePlanner reuse(scene, cspace, {}, ReuseOptions::parse("paths"), 1);
+  ReusePlanner reuse(scene, cspace, {}, only({&ReuseOptions::paths}), 1);
   LegPlanner p1(scene, cspace, {}, reuse.hooks().planner), p2(scene, cspace);
   const auto ga = goal_poses(scene, scene.objects[0], scene.objects[0].pose, cspace);
   const auto gb = goal_poses(scene, scene.objects[1], scene.objects[1].pose, cspace);
@@ -396,8 +366,8 @@ TEST(ReusePlanner, SameKeySameOutcomeAndUnchangedLayoutIsServedFromTheDatabase) 
 // exactly the budget. Object-to-object legs of three scenes (hundreds, some
 // needing more than the budget, so both outcomes are exercised).
 TEST(ReusePlanner, BudgetFindsExactlyTheLegsTheFullRunFoundWithinIt) {
-  const ReuseOptions capped = ReuseOptions::parse("failures,budget");
-  const ReuseOptions full = ReuseOptions::parse("failures");
+  const ReuseOptions capped = only({&ReuseOptions::failures, &ReuseOptions::budget});
+  const ReuseOptions full = only({&ReuseOptions::failures});
   const int budget = capped.budget_iterations;
   int legs = 0, within = 0, beyond = 0, neither = 0;
   for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
@@ -455,7 +425,7 @@ TEST(ReusePlanner, BudgetFindsExactlyTheLegsTheFullRunFoundWithinIt) {
 // again once found. Checked against that schedule kept independently here,
 // over eight rounds (a new iteration seed each) of the object-to-object legs.
 TEST(ReusePlanner, BackoffHalvesTheBudgetOfLegsThatKeepFailing) {
-  const ReuseOptions o = ReuseOptions::parse("budget,backoff");
+  const ReuseOptions o = only({&ReuseOptions::budget, &ReuseOptions::backoff});
   const int budget = o.budget_iterations, floor = o.backoff_floor;
   ASSERT_LT(floor, budget);
   int floored = 0, found_after_failing = 0, failed_after_found = 0, checked = 0;
@@ -524,7 +494,7 @@ TEST(ReusePlanner, SpeculationChangesNoOutcomeAndLeavesNoTrace) {
   for (const std::string file : {"living_room.json", "office.json"}) {
     geometry::Scene work = test_support::shipped_scene(file);
     geometry::CSpace cspace(work);
-    const ReuseOptions options = ReuseOptions::parse("all");
+    const ReuseOptions options = ReuseOptions{};
     ASSERT_TRUE(options.speculate);
     ReusePlanner one(work, cspace, {}, options, 9), many(work, cspace, {}, options, 9);
     LegPlanner p1(work, cspace, {}, one.hooks().planner);
