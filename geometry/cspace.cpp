@@ -299,50 +299,59 @@ bool CSpace::hits(const Slice& slice, const SlicePiece& piece, const Vec2* pts, 
   return true;
 }
 
-bool CSpace::refine_hits(const SlicePiece& piece, const Motion& motion, int depth) const {
-  const ConvexPiece& shape = shape_of(piece);
-  const Vec2 t = piece.owner < 0 ? Vec2{} : objects_[piece.owner].pose.position();
-  // Certified separating-axis test between the piece A (+ t) and a convex set
-  // Q given by its support function and edge normals.
-  auto separated = [&](auto&& q_support, const Vec2* q_axes, int nq) {
-    auto test = [&](Vec2 m) {
-      const double tm = dot(m, t);
-      const double a_hi = support(shape.local, m) + tm;
-      const double a_lo = -support(shape.local, {-m.x, -m.y}) + tm;
-      return q_support(m) < a_lo - kMargin || -q_support(Vec2{-m.x, -m.y}) > a_hi + kMargin;
-    };
-    for (const Vec2& m : shape.normals)
-      if (test(m)) return true;
-    for (int i = 0; i < nq; ++i)
-      if (test(q_axes[i])) return true;
-    return false;
+namespace {
+
+//! Certified separating-axis test between the convex piece `shape` (placed
+//! at `t`) and a convex set Q given by its support function and its edge
+//! normals `q_axes`: true when an axis separates them by more than kMargin.
+template <class Shape, class Support>
+bool separated(const Shape& shape, Vec2 t, Support&& q_support, const Vec2* q_axes, int nq) {
+  auto test = [&](Vec2 m) {
+    const double tm = dot(m, t);
+    const double a_hi = support(shape.local, m) + tm;
+    const double a_lo = -support(shape.local, {-m.x, -m.y}) + tm;
+    return q_support(m) < a_lo - kMargin || -q_support(Vec2{-m.x, -m.y}) > a_hi + kMargin;
   };
-  if (motion.kind != Motion::kArc) {
-    // The footprint at its exact heading, swept along a straight line: a
-    // rectangle's corners at both ends (the same point twice for a pose).
-    const Vec2 u{std::cos(motion.start.theta), std::sin(motion.start.theta)};
-    const Vec2 v{-u.y, u.x};
-    const Vec2 p0 = motion.start.position(), p1 = p0 + motion.length * u;
-    Vec2 q[8];
-    for (int i = 0; i < 4; ++i) {
-      const Vec2 c = corners_[i].x * u + corners_[i].y * v;
-      q[i] = p0 + c, q[i + 4] = p1 + c;
-    }
-    const Vec2 axes[2] = {u, v};
-    return !separated([&](Vec2 m) { return support(q, 8, m); }, axes, 2);
+  for (const Vec2& m : shape.normals)
+    if (test(m)) return true;
+  for (int i = 0; i < nq; ++i)
+    if (test(q_axes[i])) return true;
+  return false;
+}
+
+}  // namespace
+
+bool CSpace::refine_hits(const SlicePiece& piece, const Motion& motion, int depth) const {
+  return motion.kind == Motion::kArc ? arc_hits(piece, motion, depth)
+                                     : straight_hits(piece, motion);
+}
+
+bool CSpace::straight_hits(const SlicePiece& piece, const Motion& motion) const {
+  // The footprint at its exact heading, swept along a straight line: a
+  // rectangle's corners at both ends (the same point twice for a pose).
+  const Vec2 t = piece.owner < 0 ? Vec2{} : objects_[piece.owner].pose.position();
+  const Vec2 u{std::cos(motion.start.theta), std::sin(motion.start.theta)};
+  const Vec2 v{-u.y, u.x};
+  const Vec2 p0 = motion.start.position(), p1 = p0 + motion.length * u;
+  Vec2 q[8];
+  for (int i = 0; i < 4; ++i) {
+    const Vec2 c = corners_[i].x * u + corners_[i].y * v;
+    q[i] = p0 + c, q[i + 4] = p1 + c;
   }
-  // Arc. A sub-arc whose end (or middle) pose truly overlaps the piece is a
+  const Vec2 axes[2] = {u, v};
+  return !separated(shape_of(piece), t, [&](Vec2 m) { return support(q, 8, m); }, axes, 2);
+}
+
+bool CSpace::arc_hits(const SlicePiece& piece, const Motion& motion, int depth) const {
+  // A sub-arc whose end (or middle) pose truly overlaps the piece is a
   // certain hit; otherwise test the cover: centre positions in the triangle T
   // and the footprint inside the swept cover of the heading range, T ⊕ cover,
   // whose normals are those of T and of the cover. Split while undecided.
-  auto pose_at = [&](double h) {
-    const double phi = h - motion.side * 0.5 * kPi;
-    return Pose2{motion.centre.x + motion.radius * std::cos(phi),
-                 motion.centre.y + motion.radius * std::sin(phi), h};
-  };
   auto pose_hits = [&](double h) {
-    const Motion at{Motion::kPose, pose_at(h), 0.0, {}, 0.0, 0.0, 0.0, 0.0};
-    return refine_hits(piece, at, 0);
+    const double phi = h - motion.side * 0.5 * kPi;
+    const Pose2 at{motion.centre.x + motion.radius * std::cos(phi),
+                   motion.centre.y + motion.radius * std::sin(phi), h};
+    return straight_hits(piece, Motion{Motion::kPose, at, 0.0, {}, 0.0, 0.0, 0.0, 0.0});
   };
   if (depth == 0 && (pose_hits(motion.ha) || pose_hits(motion.hb))) return true;
   Vec2 cover[12];
@@ -357,15 +366,15 @@ bool CSpace::refine_hits(const SlicePiece& piece, const Motion& motion, int dept
     const double l = norm(e);
     if (l > 1e-12) axes[naxes++] = {e.y / l, -e.x / l};
   }
-  const bool sep = separated(
-      [&](Vec2 m) { return support(tri, 3, m) + support(cover_hull, nh, m); }, axes, naxes);
-  if (sep) return false;
+  const Vec2 t = piece.owner < 0 ? Vec2{} : objects_[piece.owner].pose.position();
+  const auto q_support = [&](Vec2 m) { return support(tri, 3, m) + support(cover_hull, nh, m); };
+  if (separated(shape_of(piece), t, q_support, axes, naxes)) return false;
   if (depth >= kRefineDepth) return true;
   const double mid = 0.5 * (motion.ha + motion.hb);
   if (pose_hits(mid)) return true;
   Motion lo = motion, hi = motion;
   lo.hb = hi.ha = mid;
-  return refine_hits(piece, lo, depth + 1) || refine_hits(piece, hi, depth + 1);
+  return arc_hits(piece, lo, depth + 1) || arc_hits(piece, hi, depth + 1);
 }
 
 int CSpace::arc_triangle(const Motion& m, double ha, double hb, Vec2 (&tri)[3], Vec2* axes) const {

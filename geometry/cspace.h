@@ -141,6 +141,10 @@ class CSpace {
 
   int slice_of(double theta) const;
   bool refine_hits(const SlicePiece& piece, const Motion& motion, int depth) const;
+  //! A pose or a straight motion against `piece`: one separating-axis test.
+  bool straight_hits(const SlicePiece& piece, const Motion& motion) const;
+  //! An arc against `piece`: the cover of the sub-arc, split while undecided.
+  bool arc_hits(const SlicePiece& piece, const Motion& motion, int depth) const;
   int arc_triangle(const Motion& m, double ha, double hb, Vec2 (&tri)[3], Vec2* axes) const;
   void build_slice_shapes(const Wheelchair& chair);
   void build_walls(const Polygon& room, double reach);

@@ -129,6 +129,66 @@ void decide(const Move& move, double u, Chain& chain, TraceEntry& e, AnnealResul
   }
 }
 
+//! The object to move at this iteration: a movable one, or with
+//! focus_probability one of the focus objects (callbacks.focus) when there
+//! are any. `focused` says which.
+int pick_object(const AnnealOptions& options, const AnnealCallbacks& callbacks,
+                const std::vector<int>& candidates, std::mt19937_64& rng, bool& focused) {
+  int object = candidates[uniform_index(rng, candidates.size())];
+  focused = false;
+  if (callbacks.focus) {
+    const std::vector<int> focus = callbacks.focus();
+    if (!focus.empty() && uniform01(rng) < options.focus_probability) {
+      object = focus[uniform_index(rng, focus.size())];
+      focused = true;
+    }
+  }
+  return object;
+}
+
+//! The proposal for `object`: propose_move(), and for a focus object a jump
+//! with probability 1/2 when the move is a step.
+Move draw_move(const AnnealOptions& options, const Pose2& from, int object, bool focused, int k,
+               std::mt19937_64& rng) {
+  Move move = propose_move(options, from, object, k, rng);
+  if (focused && options.bounds && !move.jump && uniform01(rng) < 0.5) {
+    const double rx = uniform01(rng), ry = uniform01(rng);
+    move = Move{object, from, from};
+    jump_to(options, rx, ry, uniform01(rng), move);
+  }
+  return move;
+}
+
+//! A jump is redrawn until valid: at most `attempts` draws in all; decide()
+//! checks the last draw again.
+void redraw_jump(const AnnealOptions& options, const AnnealCallbacks& callbacks, int attempts,
+                 Chain& chain, Move& move, std::mt19937_64& rng) {
+  for (int a = 1; move.jump && a < attempts; ++a) {
+    chain.poses[move.object] = move.to;
+    const bool ok = callbacks.move_valid(chain.poses, move.object);
+    chain.poses[move.object] = move.from;
+    if (ok) return;
+    const double rx = uniform01(rng), ry = uniform01(rng);
+    jump_to(options, rx, ry, uniform01(rng), move);
+  }
+}
+
+//! The initial layout's cost, and the best so far when it is valid.
+Chain start_chain(std::vector<Pose2> poses, const AnnealCallbacks& callbacks,
+                  AnnealResult& result) {
+  Chain chain{std::move(poses), 0.0};
+  chain.current = callbacks.cost(chain.poses, Move{}, Acceptance{});
+  result.initial_cost = chain.current;
+  result.best = chain.poses;
+  result.best_cost = std::numeric_limits<double>::infinity();
+  if (!callbacks.layout_valid || callbacks.layout_valid(chain.poses)) {
+    result.best_cost = chain.current;
+    result.best_valid = true;
+    if (callbacks.new_best) callbacks.new_best();
+  }
+  return chain;
+}
+
 }  // namespace
 
 AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
@@ -141,17 +201,7 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     if (movable[i]) candidates.push_back(static_cast<int>(i));
 
   AnnealResult result;
-  Chain chain{std::move(poses), 0.0};
-  chain.current = callbacks.cost(chain.poses, Move{}, Acceptance{});
-  result.initial_cost = chain.current;
-  result.best = chain.poses;
-  result.best_cost = std::numeric_limits<double>::infinity();
-  if (!callbacks.layout_valid || callbacks.layout_valid(chain.poses)) {
-    result.best_cost = chain.current;
-    result.best_valid = true;
-    if (callbacks.new_best) callbacks.new_best();
-  }
-
+  Chain chain = start_chain(std::move(poses), callbacks, result);
   for (int k = 0; k < options.iterations && !candidates.empty(); ++k) {
     if (stop && stop->load()) {
       result.stopped = true;
@@ -160,35 +210,14 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     TraceEntry e;
     e.iteration = k;
     e.temperature = temperature_at(options, k);
-    int object =
-        candidates[uniform_index(rng, candidates.size())];
+    // Draws in a fixed order: object, move, the Metropolis uniform (before
+    // the proposal is costed), then any redraws of an invalid jump.
     bool focused = false;
-    if (callbacks.focus) {
-      const std::vector<int> focus = callbacks.focus();
-      if (!focus.empty() && uniform01(rng) < options.focus_probability) {
-        object = focus[uniform_index(rng, focus.size())];
-        focused = true;
-      }
-    }
-    Move move = propose_move(options, chain.poses[object], object, k, rng);
-    if (focused && options.bounds && !move.jump && uniform01(rng) < 0.5) {
-      const double rx = uniform01(rng), ry = uniform01(rng);
-      move = Move{object, chain.poses[object], chain.poses[object]};
-      jump_to(options, rx, ry, uniform01(rng), move);
-    }
-    const double u = uniform01(rng);  // drawn before the proposal is costed
-    // A jump is redrawn until valid (at most jump_attempts draws in all, or
-    // focus_jump_attempts for a focus object); decide() checks the last
-    // draw again.
-    const int attempts = focused ? options.focus_jump_attempts : options.jump_attempts;
-    for (int a = 1; move.jump && a < attempts; ++a) {
-      chain.poses[object] = move.to;
-      const bool ok = callbacks.move_valid(chain.poses, object);
-      chain.poses[object] = move.from;
-      if (ok) break;
-      const double rx = uniform01(rng), ry = uniform01(rng);
-      jump_to(options, rx, ry, uniform01(rng), move);
-    }
+    const int object = pick_object(options, callbacks, candidates, rng, focused);
+    Move move = draw_move(options, chain.poses[object], object, focused, k, rng);
+    const double u = uniform01(rng);
+    redraw_jump(options, callbacks, focused ? options.focus_jump_attempts : options.jump_attempts,
+                chain, move, rng);
     e.object = object;
     e.rotation = move.rotation;
     e.jump = move.jump;

@@ -160,13 +160,27 @@ double CostModel::tour_total(int k, const planning::Tour& tour,
   return wp[0] * l * c[0] + wp[1] * l * c[1] + wp[2] * l * c[2];
 }
 
+CostTerms CostModel::interior_terms(const InteriorCosts& interior) const {
+  CostTerms t;
+  t.interior_distance = scene_.weights.interior[0] * interior.distance;
+  t.interior_rotation = scene_.weights.interior[1] * interior.rotation;
+  return t;
+}
+
 CostTerms CostModel::evaluate(const std::vector<Pose2>& poses,
+                              const std::vector<planning::Tour>& tours,
+                              const std::vector<std::vector<double>>* blockage,
+                              int tours_counted) const {
+  return evaluate(interior(poses), tours, blockage, tours_counted);
+}
+
+CostTerms CostModel::evaluate(const InteriorCosts& interior,
                               const std::vector<planning::Tour>& tours,
                               const std::vector<std::vector<double>>* blockage,
                               int tours_counted) const {
   assert(tours.size() == sequences_.size());
   assert(!blockage || blockage->size() == tours.size());
-  CostTerms t;
+  CostTerms t = interior_terms(interior);
   const auto& wp = scene_.weights.path;
   const std::size_t counted =
       tours_counted < 0 ? tours.size() : std::min(tours.size(), std::size_t(tours_counted));
@@ -185,9 +199,6 @@ CostTerms CostModel::evaluate(const std::vector<Pose2>& poses,
       t.unfound_penalty += wp[0] * l * c[0];
     }
   }
-  const auto in = interior(poses);
-  t.interior_distance = scene_.weights.interior[0] * in.distance;
-  t.interior_rotation = scene_.weights.interior[1] * in.rotation;
   return t;
 }
 

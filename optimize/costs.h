@@ -111,6 +111,12 @@ class CostModel {
   CostTerms evaluate(const std::vector<Pose2>& poses, const std::vector<planning::Tour>& tours,
                      const std::vector<std::vector<double>>* blockage = nullptr,
                      int tours_counted = -1) const;
+  //! The same with the poses' interior costs already computed.
+  CostTerms evaluate(const InteriorCosts& interior, const std::vector<planning::Tour>& tours,
+                     const std::vector<std::vector<double>>* blockage = nullptr,
+                     int tours_counted = -1) const;
+  //! Terms with only the weighted interior costs set (no tour counted).
+  CostTerms interior_terms(const InteriorCosts& interior) const;
 
   //! Distance from the footprint to the room edge `edge` (vertices edge, edge+1).
   double wall_distance(const geometry::Polygon& footprint, int edge) const;

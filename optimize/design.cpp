@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 
@@ -197,50 +198,54 @@ class DesignRun {
       proposed_terms_ = model_.evaluate(p, tours_);
       return proposed_terms_.total();
     }
-    if (options_.early_reject) {
-      const InteriorCosts in = model_.interior(p);
-      const double base =
-          scene_.weights.interior[0] * in.distance + scene_.weights.interior[1] * in.rotation;
-      if (acceptance.rejects(base)) {
-        // Rejected on the interior alone: no tour is planned.
-        rejected_early_ = true;
-        proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage(), 0);
-        skipped_from(0);
-        return base;
-      }
-      // The baseline's legs are costly enough to pay for a grid fill before
-      // any of them: tours the grid proves unfound bound the cost from below.
-      // (Not for the proposed planner: its typical layout costs about as
-      // much as a fill. With every technique off it is the baseline, and
-      // bounds like it, so that both give the same trace.)
-      std::vector<double> floors;
-      const bool baseline_like = !options_.proposed || !options_.reuse.any();
-      if (baseline_like && options_.refuse_impossible) {
-        const auto f0 = Clock::now();
-        floors = round_.certain_floors(model_);
-        planning_ms_ = 1e3 * seconds_since(f0);  // planning work: counted as such
-        result_.time_planning_s += planning_ms_ / 1e3;
-        double pre = base;
-        for (double f : floors) pre += f;
-        if (acceptance.rejects(pre)) {
-          rejected_early_ = true;
-          proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage(), 0);
-          skipped_from(0);
-          return pre;
-        }
-      }
-      const TourRound::Bound bound{&model_, base, &acceptance, floors.empty() ? nullptr : &floors};
-      plan_current(&bound);
-      if (outcome_.rejected) {
-        rejected_early_ = true;
-        proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage(), outcome_.kept);
-        return outcome_.bound;
-      }
-    } else {
+    const InteriorCosts in = model_.interior(p);
+    if (!options_.early_reject) {
       plan_current();
+      proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage());
+      return proposed_terms_.total();
     }
-    proposed_terms_ = model_.evaluate(p, tours_, &round_.blockage());
+    // Rejected on the interior alone, or on the grid's floors: no tour is
+    // planned.
+    const double base = model_.interior_terms(in).total();
+    if (acceptance.rejects(base)) return rejected_unplanned(in, base);
+    const std::vector<double> floors = pre_planning_floors();
+    double pre = base;
+    for (double f : floors) pre += f;
+    if (!floors.empty() && acceptance.rejects(pre)) return rejected_unplanned(in, pre);
+    const TourRound::Bound bound{&model_, base, &acceptance, floors.empty() ? nullptr : &floors};
+    plan_current(&bound);
+    if (outcome_.rejected) {
+      rejected_early_ = true;
+      proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage(), outcome_.kept);
+      return outcome_.bound;
+    }
+    proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage());
     return proposed_terms_.total();
+  }
+
+  //! A proposal rejected before any tour was planned, on the lower bound
+  //! `bound`.
+  double rejected_unplanned(const InteriorCosts& in, double bound) {
+    rejected_early_ = true;
+    proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage(), 0);
+    skipped_from(0);
+    return bound;
+  }
+
+  //! The grid's lower bounds of the tours' costs before anything is planned
+  //! (TourRound::certain_floors), or none. The baseline's legs are costly
+  //! enough to pay for a grid fill before any of them; the proposed
+  //! planner's typical layout costs about as much as a fill, so it skips
+  //! them, except with every technique off: then it is the baseline and
+  //! bounds like it, so that both give the same trace.
+  std::vector<double> pre_planning_floors() {
+    const bool baseline_like = !options_.proposed || !options_.reuse.any();
+    if (!baseline_like || !options_.refuse_impossible) return {};
+    const auto f0 = Clock::now();
+    std::vector<double> floors = round_.certain_floors(model_);
+    planning_ms_ = 1e3 * seconds_since(f0);  // planning work: counted as such
+    result_.time_planning_s += planning_ms_ / 1e3;
+    return floors;
   }
 
   //! Beyond the paper (docs/optimize.md "Blocked layouts"): when stops are
@@ -254,6 +259,42 @@ class DesignRun {
   bool unblock() {
     static constexpr int kUnblockProposals = 300;
     if (!options_.escape || !plan_every_iteration_) return false;
+    const std::vector<int> stops = stop_objects();
+    double score = 0.0;
+    std::vector<int> walled = walled_off(stops, score);
+    result_.unblock.walled_before = static_cast<int>(walled.size());
+    result_.unblock.walled_after = result_.unblock.walled_before;
+    if (walled.empty()) return false;
+    std::mt19937_64 rng(splitmix64(options_.seed ^ 0x756e'626c'6f63'6bULL));
+    bool changed = false;
+    for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
+      if (stop_ && stop_->load()) break;
+      const std::vector<int> focus = focus_for(walled, true);
+      if (focus.empty()) break;
+      const int o = focus[uniform_index(rng, focus.size())];
+      const std::optional<Pose2> to = unblock_move(o, rng);
+      ++result_.unblock.proposals;
+      if (!to) continue;
+      const Pose2 from = work_.objects[o].pose;
+      place(o, *to);
+      double next = 0.0;
+      std::vector<int> now = walled_off(stops, next);
+      if (next <= score) {
+        score = next;
+        walled = std::move(now);
+        poses_[o] = *to;
+        changed = true;
+        ++result_.unblock.accepted;
+      } else {
+        place(o, from);
+      }
+    }
+    result_.unblock.walled_after = static_cast<int>(walled.size());
+    return changed;
+  }
+
+  //! The objects that are stops of some sequence, ascending.
+  std::vector<int> stop_objects() const {
     std::vector<int> stops;
     for (const Sequence& s : sequences_)
       for (std::size_t i = 1; i < s.nodes.size(); ++i) {
@@ -261,72 +302,56 @@ class DesignRun {
         if (o >= 0 && std::find(stops.begin(), stops.end(), o) == stops.end()) stops.push_back(o);
       }
     std::sort(stops.begin(), stops.end());
-    auto walled_now = [&](double& total) {
-      std::vector<int> walled;
-      total = 0.0;
-      for (int s : stops) {
-        const double b = round_.gate().blockage(round_.goals_of(s));
-        total += b;
-        if (b > 0.0) walled.push_back(s);
-      }
-      return walled;
-    };
-    double score = 0.0;
-    std::vector<int> walled = walled_now(score);
-    result_.unblock.walled_before = static_cast<int>(walled.size());
-    result_.unblock.walled_after = result_.unblock.walled_before;
-    if (walled.empty()) return false;
-    std::mt19937_64 rng(splitmix64(options_.seed ^ 0x756e'626c'6f63'6bULL));
-    const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
-    bool changed = false;
-    for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
-      if (stop_ && stop_->load()) break;
-      const std::vector<int> focus = focus_for(walled, true);
-      if (focus.empty()) break;
-      const int o = focus[uniform_index(rng, focus.size())];
-      const Pose2 from = work_.objects[o].pose;
-      const double kind = uniform01(rng);
-      Pose2 to = from;
-      bool valid = false;
-      for (int attempt = 0; attempt < 50 && !valid; ++attempt) {
-        to = from;
-        if (kind < 0.5) {
-          to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
-          to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
-          to.theta = geometry::wrap_angle(from.theta + std::floor(uniform01(rng) * 4.0) *
-                                                           (std::numbers::pi / 2));
-        } else if (kind < 0.75) {
-          to.x += 2.0 * uniform01(rng) - 1.0;
-          to.y += 2.0 * uniform01(rng) - 1.0;
-        } else {
-          to.theta = geometry::wrap_angle(from.theta +
-                                          (uniform01(rng) < 0.5 ? 1 : -1) * (std::numbers::pi / 2));
-        }
-        std::vector<Pose2> p = poses_;
-        p[o] = to;
-        valid = move_valid(p, o);
-      }
-      ++result_.unblock.proposals;
-      if (!valid) continue;
-      work_.objects[o].pose = to;
-      cspace_.move_object(o, to);
-      round_.layout_changed();
-      double next = 0.0;
-      std::vector<int> now = walled_now(next);
-      if (next <= score) {
-        score = next;
-        walled = std::move(now);
-        poses_[o] = to;
-        changed = true;
-        ++result_.unblock.accepted;
-      } else {
-        work_.objects[o].pose = from;
-        cspace_.move_object(o, from);
-        round_.layout_changed();
-      }
+    return stops;
+  }
+
+  //! The stops the door's reachable region misses (grade > 0); `total` is
+  //! the summed grade of all `stops`.
+  std::vector<int> walled_off(const std::vector<int>& stops, double& total) {
+    std::vector<int> walled;
+    total = 0.0;
+    for (int s : stops) {
+      const double b = round_.gate().blockage(round_.goals_of(s));
+      total += b;
+      if (b > 0.0) walled.push_back(s);
     }
-    result_.unblock.walled_after = static_cast<int>(walled.size());
-    return changed;
+    return walled;
+  }
+
+  //! One unblocking proposal for object `o`: a jump anywhere in the room's
+  //! box with a quarter turn (1/2), a step of up to 1 m per axis (1/4) or a
+  //! quarter turn (1/4), redrawn up to 50 times until valid; nullopt when
+  //! no draw was.
+  std::optional<Pose2> unblock_move(int o, std::mt19937_64& rng) {
+    constexpr double kQuarter = std::numbers::pi / 2;
+    const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
+    const Pose2 from = work_.objects[o].pose;
+    const double kind = uniform01(rng);
+    for (int attempt = 0; attempt < 50; ++attempt) {
+      Pose2 to = from;
+      if (kind < 0.5) {
+        to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
+        to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
+        to.theta = geometry::wrap_angle(from.theta + std::floor(uniform01(rng) * 4.0) * kQuarter);
+      } else if (kind < 0.75) {
+        to.x += 2.0 * uniform01(rng) - 1.0;
+        to.y += 2.0 * uniform01(rng) - 1.0;
+      } else {
+        to.theta = geometry::wrap_angle(from.theta + (uniform01(rng) < 0.5 ? 1 : -1) * kQuarter);
+      }
+      std::vector<Pose2> p = poses_;
+      p[o] = to;
+      if (move_valid(p, o)) return to;
+    }
+    return std::nullopt;
+  }
+
+  //! Moves object `o` to `to` in the working scene, the C-space and the
+  //! round's grid.
+  void place(int o, const Pose2& to) {
+    work_.objects[o].pose = to;
+    cspace_.move_object(o, to);
+    round_.layout_changed();
   }
 
   //! The annealer's focus, with `escape`, when tours are unfound: the
