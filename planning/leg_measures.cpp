@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "planning/motion_validator.h"
+#include "planning/moved_objects.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
@@ -16,19 +17,14 @@ bool same_path(const rs::Path& a, const rs::Path& b) {
 
 }  // namespace
 
-LegMeasures::LegMeasures(const geometry::CSpace& cspace, double radius, double reference_width)
-    : cspace_(&cspace),
+LegMeasures::LegMeasures(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                         double radius, double reference_width)
+    : scene_(&scene),
+      cspace_(&cspace),
       radius_(radius),
       reference_width_(reference_width),
       swept_reach_(cspace.swept_reach()) {
   for (int i = 0; i < cspace.object_count(); ++i) object_reach_.push_back(cspace.object_reach(i));
-}
-
-std::vector<Pose2> LegMeasures::layout() const {
-  std::vector<Pose2> poses;
-  poses.reserve(static_cast<std::size_t>(cspace_->object_count()));
-  for (int i = 0; i < cspace_->object_count(); ++i) poses.push_back(cspace_->object_pose(i));
-  return poses;
 }
 
 void LegMeasures::measure(Leg& leg, double step) {
@@ -38,7 +34,7 @@ void LegMeasures::measure(Leg& leg, double step) {
     auto it = metrics_.find(leg.key);
     if (it != metrics_.end()) old = it->second;
   }
-  std::vector<Pose2> now = layout();
+  std::vector<Pose2> now = layout_of(*cspace_);
   if (old && !(old->step == step && old->from == leg.from && same_path(old->path, leg.path)))
     old.reset();
 
@@ -105,24 +101,14 @@ void LegMeasures::measure(Leg& leg, double step) {
 }
 
 bool LegMeasures::moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const {
-  for (std::size_t i = 0; i < now.size(); ++i) {
-    if (now[i] == e.layout[i]) continue;
-    // A piece is at most e.piece long: its reference point stays within
-    // e.piece of its start.
-    const double reach = e.piece + swept_reach_ + object_reach_[i] + 1e-3;
-    const double reach2 = reach * reach;
-    for (const Pose2& pose : {e.layout[i], now[i]}) {
-      for (const geometry::Vec2& s : e.starts) {
-        const double dx = s.x - pose.x, dy = s.y - pose.y;
-        if (dx * dx + dy * dy <= reach2) return false;
-      }
-    }
-  }
-  return true;
+  // A piece is at most e.piece long: its reference point stays within
+  // e.piece of its start.
+  return moved_objects_clear(*scene_, e.layout, now, e.starts,
+                             e.piece + swept_reach_ + kOffsetSlack, true);
 }
 
 double LegMeasures::certified_prefix(const Leg& leg, double piece) {
-  std::vector<Pose2> now = layout();
+  std::vector<Pose2> now = layout_of(*cspace_);
   std::shared_ptr<const CertifiedEntry> old;
   {
     std::lock_guard lock(mutex_);

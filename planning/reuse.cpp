@@ -14,19 +14,18 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "planning/moved_objects.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
 
 namespace {
 
-//! How far from an RRT node a collision query can look: a query piece
-//! starts at a node and is at most step_length long; the chair (and the
-//! C-space's swept slice shape) stays within its half diagonal of its
-//! centre; 5 cm on top for the conservative rounding.
-double query_reach(const geometry::Scene& scene, const TourOptions& tour) {
-  return tour.planner.step_length +
-         0.5 * std::hypot(scene.wheelchair.length, scene.wheelchair.width) + 0.05;
+//! FailureMemory's margin: a collision query of the RRT starts at a node
+//! (or is the goal pose) and drives at most step_length, so its reference
+//! point stays within that of a recorded point (moved_objects.h).
+double failure_margin(const geometry::CSpace& cspace, const TourOptions& tour) {
+  return tour.planner.step_length + cspace.swept_reach() + kOffsetSlack;
 }
 
 void add_stats(LegStats& into, const LegStats& more) {
@@ -74,7 +73,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       radius_(scene.wheelchair.turning_radius),
       trees_(cspace, scene.wheelchair.turning_radius, options),
       scene_(scene),
-      failures_(scene_, query_reach(scene, tour)),
+      failures_(scene_, failure_margin(cspace, tour)),
       proofs_(scene_, cspace, options.proof_grid, options.proof_cells) {
   if (options_.samples || options_.steering) {
     const geometry::Box b = geometry::bounding_box(scene.room.polygon);
@@ -90,16 +89,16 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
   }
   if (options_.metrics)
-    measures_ = std::make_unique<LegMeasures>(cspace, radius_, scene.weights.clearance_width);
+    measures_ =
+        std::make_unique<LegMeasures>(scene_, cspace, radius_, scene.weights.clearance_width);
   // PathDatabase::still_free(): a point of a stored path lies within half a trace step of
   // the trace; straight motions are tested as the segment itself and each
   // arc, cut at slice borders, as triangles within one slice's arc length
-  // (radius · 2π/K) of a point on the arc (cspace.h); an object's C-obstacle
-  // pieces A ⊕ (−S_k) lie within swept_reach() of its footprint A, and
-  // offsets round outward by far less than 1 mm.
+  // (radius · 2π/K) of a point on the arc (cspace.h); then swept_reach() and
+  // the slack (moved_objects.h).
   still_free_margin_ = 0.5 * PathDatabase::kTraceStep +
                        radius_ * 2.0 * std::numbers::pi / cspace.slices() + cspace.swept_reach() +
-                       1e-3;
+                       kOffsetSlack;
 }
 
 ReusePlanner::~ReusePlanner() = default;
