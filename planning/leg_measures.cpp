@@ -135,15 +135,11 @@ double LegMeasures::certified_prefix(const Leg& leg, double piece) {
   } else {
     MotionValidator validator(*cspace_, radius_);
     entry->prefix = validator.certified_prefix(leg.from, leg.path, piece);
-    // The pieces certified_prefix() checks (cut_segment).
-    Pose2 p = leg.from;
-    for (const rs::Segment& seg : leg.path.segments) {
-      const auto [pieces, part] = cut_segment(seg, piece);
-      for (int k = 0; k < pieces; ++k) {
-        entry->starts.push_back(p.position());
-        p = rs::advance(p, part, radius_);
-      }
-    }
+    // The pieces certified_prefix() checks.
+    for_each_piece(leg.from, leg.path, piece, radius_, [&](const PathPiece& q) {
+      entry->starts.push_back(q.start.position());
+      return true;
+    });
   }
   entry->layout = std::move(now);
   const double prefix = entry->prefix;

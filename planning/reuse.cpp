@@ -167,24 +167,14 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   MotionValidator validator(*cspace_, radius_);
   RrtTree chain;
   chain.nodes.push_back({start, -1, rs::Path{{}, radius_}, 0.0});
-  const double step = tour_.planner.step_length;
-  Pose2 p = start;
   double cost = 0.0;
-  bool blocked = false;
-  for (const rs::Segment& seg : base.segments) {
-    const auto [pieces, part] = cut_segment(seg, step);
-    for (int i = 0; i < pieces && !blocked; ++i) {
-      if (!validator.segment_free(p, part)) {
-        blocked = true;
-        break;
-      }
-      p = rs::advance(p, part, radius_);
-      cost += part.length;
-      chain.nodes.push_back(
-          {p, static_cast<std::int32_t>(chain.nodes.size() - 1), rs::Path{{part}, radius_}, cost});
-    }
-    if (blocked) break;
-  }
+  for_each_piece(start, base, tour_.planner.step_length, radius_, [&](const PathPiece& q) {
+    if (!validator.segment_free(q.start, q.part)) return false;
+    cost += q.part.length;
+    chain.nodes.push_back({q.end, static_cast<std::int32_t>(chain.nodes.size() - 1),
+                           rs::Path{{q.part}, radius_}, cost});
+    return true;
+  });
   LegOutcome out;
   out.planned = true;
   out.source = LegSource::kRepaired;
