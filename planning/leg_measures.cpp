@@ -42,8 +42,8 @@ void LegMeasures::measure(Leg& leg, double step) {
   entry->step = step;
   entry->from = leg.from;
   entry->path = leg.path;
-  std::vector<int> moved;
   if (old) {
+    std::vector<int> moved;
     for (std::size_t i = 0; i < now.size(); ++i)
       if (!(now[i] == old->layout[i])) moved.push_back(static_cast<int>(i));
     if (moved.empty()) {
@@ -55,34 +55,7 @@ void LegMeasures::measure(Leg& leg, double step) {
     }
     entry->waypoints = old->waypoints;
     entry->nearest = old->nearest;
-    auto moved_object = [&](int owner) {
-      return std::find(moved.begin(), moved.end(), owner) != moved.end();
-    };
-    for (std::size_t w = 0; w < entry->waypoints.size(); ++w) {
-      const Pose2& p = entry->waypoints[w];
-      geometry::CSpace::NearestObstacles& n = entry->nearest[w];
-      if (moved_object(n.left) || moved_object(n.right)) {
-        n = cspace_->nearest_obstacles(p);  // the nearest obstacle moved: afresh
-        continue;
-      }
-      for (int k : moved) {
-        // Object k's boundary lies within object_reach of its position, so
-        // it is at least |p - position| - reach away: farther than both
-        // sides' values (1 nm over the rounding), it cannot lower either.
-        const double far = std::max(n.clearance.left, n.clearance.right) + object_reach_[k] + 1e-9;
-        const double dx = p.x - now[k].x, dy = p.y - now[k].y;
-        if (dx * dx + dy * dy > far * far) continue;
-        const geometry::Clearance d = cspace_->object_clearance(p, k);
-        if (d.left < n.clearance.left) {
-          n.clearance.left = d.left;
-          n.left = k;
-        }
-        if (d.right < n.clearance.right) {
-          n.clearance.right = d.right;
-          n.right = k;
-        }
-      }
-    }
+    update_nearest(*entry, moved, now);
   } else {
     entry->waypoints = waypoints_of(leg.from, leg.path, step);
     entry->nearest.reserve(entry->waypoints.size());
@@ -98,6 +71,38 @@ void LegMeasures::measure(Leg& leg, double step) {
   std::lock_guard lock(mutex_);
   ++(old ? counters_.metrics_updated : counters_.metrics_fresh);
   metrics_[leg.key] = std::move(entry);
+}
+
+void LegMeasures::update_nearest(MetricsEntry& entry, const std::vector<int>& moved,
+                                 const std::vector<Pose2>& now) const {
+  auto moved_object = [&](int owner) {
+    return std::find(moved.begin(), moved.end(), owner) != moved.end();
+  };
+  for (std::size_t w = 0; w < entry.waypoints.size(); ++w) {
+    const Pose2& p = entry.waypoints[w];
+    geometry::CSpace::NearestObstacles& n = entry.nearest[w];
+    if (moved_object(n.left) || moved_object(n.right)) {
+      n = cspace_->nearest_obstacles(p);  // the nearest obstacle moved: afresh
+      continue;
+    }
+    for (int k : moved) {
+      // Object k's boundary lies within object_reach of its position, so
+      // it is at least |p - position| - reach away: farther than both
+      // sides' values (1 nm over the rounding), it cannot lower either.
+      const double far = std::max(n.clearance.left, n.clearance.right) + object_reach_[k] + 1e-9;
+      const double dx = p.x - now[k].x, dy = p.y - now[k].y;
+      if (dx * dx + dy * dy > far * far) continue;
+      const geometry::Clearance d = cspace_->object_clearance(p, k);
+      if (d.left < n.clearance.left) {
+        n.clearance.left = d.left;
+        n.left = k;
+      }
+      if (d.right < n.clearance.right) {
+        n.clearance.right = d.right;
+        n.right = k;
+      }
+    }
+  }
 }
 
 bool LegMeasures::moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const {

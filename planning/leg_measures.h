@@ -86,6 +86,10 @@ class LegMeasures {
     double prefix = 0.0;
     std::vector<geometry::Vec2> starts;  //!< start position of every piece checked
   };
+  //! Brings the stored nearest obstacles of `entry` (measured in another
+  //! layout, same leg) to `now`, where the objects `moved` moved.
+  void update_nearest(MetricsEntry& entry, const std::vector<int>& moved,
+                      const std::vector<Pose2>& now) const;
   //! True when no object that moved between `then` and `now` came within
   //! reach of a piece of `e` (in either pose).
   bool moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const;
