@@ -1,5 +1,7 @@
 #include "planning/failure_memory.h"
 
+#include "planning/moved_objects.h"
+
 namespace hrs::planning {
 
 bool FailureMemory::repeats(const LegKey& key, const geometry::Pose2& from,
@@ -8,21 +10,9 @@ bool FailureMemory::repeats(const LegKey& key, const geometry::Pose2& from,
   if (it == failures_.end()) return false;
   const Failure& f = it->second;
   if (!(f.from == from) || !(f.to == to)) return false;
-  for (int i = 0; i < cspace.object_count(); ++i) {
-    const geometry::Pose2& now = cspace.object_pose(i);
-    if (now == f.layout[i]) continue;
-    // Where the object stood then and stands now, each box grown by the
-    // queries' reach, must hold none of the run's query centres.
-    for (const geometry::Pose2& pose : {f.layout[i], now}) {
-      geometry::Object o = scene_->objects[i];
-      o.pose = pose;
-      geometry::Box b = geometry::bounding_box(geometry::world_footprint(o));
-      b.xmin -= reach_, b.ymin -= reach_, b.xmax += reach_, b.ymax += reach_;
-      for (const geometry::Vec2& p : f.points)
-        if (p.x >= b.xmin && p.x <= b.xmax && p.y >= b.ymin && p.y <= b.ymax) return false;
-    }
-  }
-  return true;
+  // Where each moved object stood then and stands now: a query near a node
+  // could have hit it then or could hit it now.
+  return moved_objects_clear(*scene_, f.layout, layout_of(cspace), f.points, margin_, true);
 }
 
 void FailureMemory::record(const LegKey& key, const geometry::Pose2& from,

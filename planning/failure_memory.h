@@ -22,8 +22,9 @@ namespace hrs::planning {
 
 class FailureMemory {
  public:
-  //! `reach`: how far from a node a collision query of the RRT can look.
-  FailureMemory(const geometry::Scene& scene, double reach) : scene_(&scene), reach_(reach) {}
+  //! `margin`: how far from a node (or the goal) an object's footprint must
+  //! stay for no collision query of the run to change (moved_objects_clear).
+  FailureMemory(const geometry::Scene& scene, double margin) : scene_(&scene), margin_(margin) {}
 
   //! True when the recorded failure of `key` provably repeats in the
   //! current layout of `cspace`.
@@ -48,7 +49,7 @@ class FailureMemory {
     std::vector<geometry::Vec2> points;
   };
   const geometry::Scene* scene_;
-  double reach_;
+  double margin_;
   std::map<LegKey, Failure> failures_;
   std::map<LegKey, int> in_a_row_;
 };

@@ -54,6 +54,37 @@ Side side_of_normal(Vec2 n) {
   return n.y > 0 ? Side::kLeft : Side::kRight;
 }
 
+//! At most this many scan steps per slot (the 2 cm step binds for
+//! furniture-sized objects and chairs).
+constexpr double kMaxScanSteps = 400.0;
+
+//! Smallest offset d whose chair at facing_origin(q, normal, d) keeps the
+//! approach's gap from the footprint `fp`: scan outward, then bisect to
+//! `tolerance`. Negative when no offset up to the scan's limit is clear.
+double clear_offset(const geometry::Scene& scene, const Polygon& fp, double gap, Vec2 q,
+                    Vec2 normal, double tolerance) {
+  const double length = scene.wheelchair.length, width = scene.wheelchair.width;
+  auto clear = [&](double d) {
+    return polygon_distance(chair_polygon(facing_origin(q, normal, d), length, width), fp) >= gap;
+  };
+  const double limit = length + width + gap + 1.0;
+  const double kScan = std::max(0.02, limit / kMaxScanSteps);
+  double lo = 0.0, hi = -1.0;
+  for (double d = 0.0; d <= limit; d += kScan) {
+    if (clear(d)) {
+      hi = d;
+      break;
+    }
+    lo = d;
+  }
+  if (hi < 0.0) return hi;
+  while (hi - lo > tolerance) {
+    const double mid = 0.5 * (lo + hi);
+    (clear(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 }  // namespace
 
 Side side_of(const geometry::Object& object, const Pose2& object_pose, Vec2 point) {
@@ -91,7 +122,7 @@ std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geome
   std::vector<GoalPose> out;
   if (fp.size() < 3) return out;
   const geometry::Approach approach = object.approach_or_default();
-  const double length = scene.wheelchair.length, width = scene.wheelchair.width;
+  const double width = scene.wheelchair.width;
   double perimeter = 0.0;
   for (std::size_t i = 0; i < fp.size(); ++i)
     perimeter += geometry::norm(fp[(i + 1) % fp.size()] - fp[i]);
@@ -100,7 +131,6 @@ std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geome
   // objects and chairs, where the slots are a chair width apart or closer and
   // the scan steps 2 cm).
   constexpr double kMaxSlots = 256.0;
-  constexpr double kMaxScanSteps = 400.0;
   const int n = static_cast<int>(
       std::clamp(std::ceil(options.density * perimeter / width - 1e-9), 1.0, kMaxSlots));
   const double spacing = perimeter / n;
@@ -123,29 +153,10 @@ std::vector<GoalPose> local_goal_poses(const geometry::Scene& scene, const geome
     const Side side = side_of_normal(normal);
     if (!approach.sides[static_cast<int>(side)]) continue;
     const Vec2 q = a + std::clamp(s - edge_start, 0.0, len) * dir;
-
-    // Smallest offset d whose chair (facing the centre) keeps `gap` from the
-    // footprint: scan outward, then bisect.
-    auto clear = [&](double d) {
-      return polygon_distance(chair_polygon(facing_origin(q, normal, d), length, width), fp) >=
-             approach.gap;
-    };
-    const double limit = length + width + approach.gap + 1.0;
-    const double kScan = std::max(0.02, limit / kMaxScanSteps);
-    double lo = 0.0, hi = -1.0;
-    for (double d = 0.0; d <= limit; d += kScan) {
-      if (clear(d)) {
-        hi = d;
-        break;
-      }
-      lo = d;
-    }
-    if (hi < 0.0) continue;
-    while (hi - lo > options.gap_tolerance) {
-      const double mid = 0.5 * (lo + hi);
-      (clear(mid) ? hi : lo) = mid;
-    }
-    out.push_back({facing_origin(q, normal, hi), side, slot});
+    // The chair faces the centre from the nearest offset that keeps the gap.
+    const double d = clear_offset(scene, fp, approach.gap, q, normal, options.gap_tolerance);
+    if (d < 0.0) continue;
+    out.push_back({facing_origin(q, normal, d), side, slot});
   }
   return out;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "planning/motion_validator.h"
+#include "planning/moved_objects.h"
 #include "planning/path_ops.h"
 
 namespace hrs::planning {
@@ -16,19 +17,14 @@ bool same_path(const rs::Path& a, const rs::Path& b) {
 
 }  // namespace
 
-LegMeasures::LegMeasures(const geometry::CSpace& cspace, double radius, double reference_width)
-    : cspace_(&cspace),
+LegMeasures::LegMeasures(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                         double radius, double reference_width)
+    : scene_(&scene),
+      cspace_(&cspace),
       radius_(radius),
       reference_width_(reference_width),
       swept_reach_(cspace.swept_reach()) {
   for (int i = 0; i < cspace.object_count(); ++i) object_reach_.push_back(cspace.object_reach(i));
-}
-
-std::vector<Pose2> LegMeasures::layout() const {
-  std::vector<Pose2> poses;
-  poses.reserve(static_cast<std::size_t>(cspace_->object_count()));
-  for (int i = 0; i < cspace_->object_count(); ++i) poses.push_back(cspace_->object_pose(i));
-  return poses;
 }
 
 void LegMeasures::measure(Leg& leg, double step) {
@@ -38,7 +34,7 @@ void LegMeasures::measure(Leg& leg, double step) {
     auto it = metrics_.find(leg.key);
     if (it != metrics_.end()) old = it->second;
   }
-  std::vector<Pose2> now = layout();
+  std::vector<Pose2> now = layout_of(*cspace_);
   if (old && !(old->step == step && old->from == leg.from && same_path(old->path, leg.path)))
     old.reset();
 
@@ -46,8 +42,8 @@ void LegMeasures::measure(Leg& leg, double step) {
   entry->step = step;
   entry->from = leg.from;
   entry->path = leg.path;
-  std::vector<int> moved;
   if (old) {
+    std::vector<int> moved;
     for (std::size_t i = 0; i < now.size(); ++i)
       if (!(now[i] == old->layout[i])) moved.push_back(static_cast<int>(i));
     if (moved.empty()) {
@@ -59,34 +55,7 @@ void LegMeasures::measure(Leg& leg, double step) {
     }
     entry->waypoints = old->waypoints;
     entry->nearest = old->nearest;
-    auto moved_object = [&](int owner) {
-      return std::find(moved.begin(), moved.end(), owner) != moved.end();
-    };
-    for (std::size_t w = 0; w < entry->waypoints.size(); ++w) {
-      const Pose2& p = entry->waypoints[w];
-      geometry::CSpace::NearestObstacles& n = entry->nearest[w];
-      if (moved_object(n.left) || moved_object(n.right)) {
-        n = cspace_->nearest_obstacles(p);  // the nearest obstacle moved: afresh
-        continue;
-      }
-      for (int k : moved) {
-        // Object k's boundary lies within object_reach of its position, so
-        // it is at least |p - position| - reach away: farther than both
-        // sides' values (1 nm over the rounding), it cannot lower either.
-        const double far = std::max(n.clearance.left, n.clearance.right) + object_reach_[k] + 1e-9;
-        const double dx = p.x - now[k].x, dy = p.y - now[k].y;
-        if (dx * dx + dy * dy > far * far) continue;
-        const geometry::Clearance d = cspace_->object_clearance(p, k);
-        if (d.left < n.clearance.left) {
-          n.clearance.left = d.left;
-          n.left = k;
-        }
-        if (d.right < n.clearance.right) {
-          n.clearance.right = d.right;
-          n.right = k;
-        }
-      }
-    }
+    update_nearest(*entry, moved, now);
   } else {
     entry->waypoints = waypoints_of(leg.from, leg.path, step);
     entry->nearest.reserve(entry->waypoints.size());
@@ -104,25 +73,47 @@ void LegMeasures::measure(Leg& leg, double step) {
   metrics_[leg.key] = std::move(entry);
 }
 
-bool LegMeasures::moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const {
-  for (std::size_t i = 0; i < now.size(); ++i) {
-    if (now[i] == e.layout[i]) continue;
-    // A piece is at most e.piece long: its reference point stays within
-    // e.piece of its start.
-    const double reach = e.piece + swept_reach_ + object_reach_[i] + 1e-3;
-    const double reach2 = reach * reach;
-    for (const Pose2& pose : {e.layout[i], now[i]}) {
-      for (const geometry::Vec2& s : e.starts) {
-        const double dx = s.x - pose.x, dy = s.y - pose.y;
-        if (dx * dx + dy * dy <= reach2) return false;
+void LegMeasures::update_nearest(MetricsEntry& entry, const std::vector<int>& moved,
+                                 const std::vector<Pose2>& now) const {
+  auto moved_object = [&](int owner) {
+    return std::find(moved.begin(), moved.end(), owner) != moved.end();
+  };
+  for (std::size_t w = 0; w < entry.waypoints.size(); ++w) {
+    const Pose2& p = entry.waypoints[w];
+    geometry::CSpace::NearestObstacles& n = entry.nearest[w];
+    if (moved_object(n.left) || moved_object(n.right)) {
+      n = cspace_->nearest_obstacles(p);  // the nearest obstacle moved: afresh
+      continue;
+    }
+    for (int k : moved) {
+      // Object k's boundary lies within object_reach of its position, so
+      // it is at least |p - position| - reach away: farther than both
+      // sides' values (1 nm over the rounding), it cannot lower either.
+      const double far = std::max(n.clearance.left, n.clearance.right) + object_reach_[k] + 1e-9;
+      const double dx = p.x - now[k].x, dy = p.y - now[k].y;
+      if (dx * dx + dy * dy > far * far) continue;
+      const geometry::Clearance d = cspace_->object_clearance(p, k);
+      if (d.left < n.clearance.left) {
+        n.clearance.left = d.left;
+        n.left = k;
+      }
+      if (d.right < n.clearance.right) {
+        n.clearance.right = d.right;
+        n.right = k;
       }
     }
   }
-  return true;
+}
+
+bool LegMeasures::moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const {
+  // A piece is at most e.piece long: its reference point stays within
+  // e.piece of its start.
+  return moved_objects_clear(*scene_, e.layout, now, e.starts,
+                             e.piece + swept_reach_ + kOffsetSlack, true);
 }
 
 double LegMeasures::certified_prefix(const Leg& leg, double piece) {
-  std::vector<Pose2> now = layout();
+  std::vector<Pose2> now = layout_of(*cspace_);
   std::shared_ptr<const CertifiedEntry> old;
   {
     std::lock_guard lock(mutex_);
@@ -149,15 +140,11 @@ double LegMeasures::certified_prefix(const Leg& leg, double piece) {
   } else {
     MotionValidator validator(*cspace_, radius_);
     entry->prefix = validator.certified_prefix(leg.from, leg.path, piece);
-    // The pieces certified_prefix() checks (cut_segment).
-    Pose2 p = leg.from;
-    for (const rs::Segment& seg : leg.path.segments) {
-      const auto [pieces, part] = cut_segment(seg, piece);
-      for (int k = 0; k < pieces; ++k) {
-        entry->starts.push_back(p.position());
-        p = rs::advance(p, part, radius_);
-      }
-    }
+    // The pieces certified_prefix() checks.
+    for_each_piece(leg.from, leg.path, piece, radius_, [&](const PathPiece& q) {
+      entry->starts.push_back(q.start.position());
+      return true;
+    });
   }
   entry->layout = std::move(now);
   const double prefix = entry->prefix;

@@ -11,9 +11,9 @@
 // - A certified prefix is reused when the leg (start pose and path) is
 //   bit-identical to when it was computed and every object that moved since
 //   was, before and after its move, out of reach of every checked piece:
-//   farther from each piece's start than the piece length plus
-//   CSpace::swept_reach() plus CSpace::object_reach() plus 1 mm. No collision
-//   query of the certification can then change its answer (cspace.h).
+//   its footprint farther from each piece's start than the piece length
+//   plus CSpace::swept_reach() plus kOffsetSlack (moved_objects_clear). No
+//   collision query of the certification can then change its answer.
 // - Clearance at a waypoint is the minimum over walls and objects of
 //   per-obstacle distances (CSpace::nearest_obstacles). When the leg is
 //   unchanged and some objects moved, a side whose nearest obstacle did not
@@ -35,6 +35,7 @@
 
 #include "geometry/cspace.h"
 #include "geometry/pose.h"
+#include "geometry/scene.h"
 #include "planning/metrics.h"
 #include "planning/tour.h"
 #include "rs/reeds_shepp.h"
@@ -43,9 +44,11 @@ namespace hrs::planning {
 
 class LegMeasures {
  public:
-  //! Reads `cspace` at each call (its layout may change between calls).
+  //! Reads `cspace` at each call (its layout may change between calls);
+  //! `scene` gives the footprints. Both must outlive this.
   //! `reference_width`: the scene's weights.clearance_width.
-  LegMeasures(const geometry::CSpace& cspace, double radius, double reference_width);
+  LegMeasures(const geometry::Scene& scene, const geometry::CSpace& cspace, double radius,
+              double reference_width);
 
   //! Fills leg.waypoints (every `step` metres) and leg.metrics, equal to
   //! waypoints_of() and measure() in the current layout.
@@ -83,11 +86,15 @@ class LegMeasures {
     double prefix = 0.0;
     std::vector<geometry::Vec2> starts;  //!< start position of every piece checked
   };
+  //! Brings the stored nearest obstacles of `entry` (measured in another
+  //! layout, same leg) to `now`, where the objects `moved` moved.
+  void update_nearest(MetricsEntry& entry, const std::vector<int>& moved,
+                      const std::vector<Pose2>& now) const;
   //! True when no object that moved between `then` and `now` came within
   //! reach of a piece of `e` (in either pose).
   bool moves_out_of_reach(const CertifiedEntry& e, const std::vector<Pose2>& now) const;
-  std::vector<Pose2> layout() const;
 
+  const geometry::Scene* scene_;
   const geometry::CSpace* cspace_;
   double radius_;
   double reference_width_;

@@ -49,15 +49,11 @@ bool MotionValidator::certified(const Pose2& start, const rs::Segment& part, int
 double MotionValidator::certified_prefix(const Pose2& start, const rs::Path& path, double piece,
                                          int refine_depth) {
   double done = 0.0;
-  Pose2 p = start;
-  for (const rs::Segment& seg : path.segments) {
-    const auto [pieces, part] = cut_segment(seg, piece);
-    for (int i = 0; i < pieces; ++i) {
-      if (!certified(p, part, refine_depth)) return done;
-      p = rs::advance(p, part, radius_);
-      done += part.length;
-    }
-  }
+  for_each_piece(start, path, piece, radius_, [&](const PathPiece& q) {
+    if (!certified(q.start, q.part, refine_depth)) return false;
+    done += q.part.length;
+    return true;
+  });
   return done;
 }
 

@@ -1,6 +1,6 @@
 #include "planning/path_database.h"
 
-#include <algorithm>
+#include "planning/moved_objects.h"
 
 namespace hrs::planning {
 
@@ -28,28 +28,8 @@ void PathDatabase::put(const LegKey& key, const Pose2& from, const Pose2& to, co
 
 bool PathDatabase::still_free(const Entry& e, const geometry::CSpace& cspace,
                               const geometry::Scene& scene, double margin) {
-  if (e.checked.size() != static_cast<std::size_t>(cspace.object_count())) return false;
-  const double m = margin;
-  geometry::Polygon fp;
-  for (int i = 0; i < cspace.object_count(); ++i) {
-    const Pose2& now = cspace.object_pose(i);
-    if (now == e.checked[i]) continue;
-    // The footprint where the object stands now, and its box grown by m.
-    fp.clear();
-    double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-    for (const geometry::Vec2& v : scene.objects[i].footprint) {
-      fp.push_back(geometry::to_world(now, v));
-      xmin = std::min(xmin, fp.back().x), ymin = std::min(ymin, fp.back().y);
-      xmax = std::max(xmax, fp.back().x), ymax = std::max(ymax, fp.back().y);
-    }
-    for (const geometry::Vec2& p : e.trace) {
-      if (p.x < xmin - m || p.x > xmax + m || p.y < ymin - m || p.y > ymax + m) continue;
-      if (geometry::point_in_polygon(p, fp)) return false;
-      for (std::size_t k = 0, j = fp.size() - 1; k < fp.size(); j = k++)
-        if (geometry::point_segment_distance(p, fp[j], fp[k]) <= m) return false;
-    }
-  }
-  return true;
+  // The old poses blocked nothing then: only where the objects stand now counts.
+  return moved_objects_clear(scene, e.checked, layout_of(cspace), e.trace, margin, false);
 }
 
 }  // namespace hrs::planning

@@ -51,12 +51,11 @@ class PathDatabase {
            std::vector<Pose2> checked = {});
   void erase(const LegKey& key) { entries_.erase(key); }
   //! True when path_free(e.from, e.path), which held in the layout
-  //! e.checked, provably holds in the current layout of `cspace`: the walls
-  //! never move and the footprint of every object that moved since lies
-  //! (now) farther than `margin` from each point of e.trace. Its old pose
-  //! blocked nothing then and is gone, so no query of the check can change
-  //! to "blocked" (geometry/cspace.h; the margin's terms are in
-  //! ReusePlanner's constructor).
+  //! e.checked, provably holds in the current layout of `cspace`: every
+  //! object that moved since lies (now) farther than `margin` from each point
+  //! of e.trace (moved_objects_clear; its old pose blocked nothing then and
+  //! is gone, so no query of the check can change to "blocked"). The
+  //! margin's terms are in ReusePlanner's constructor.
   static bool still_free(const Entry& e, const geometry::CSpace& cspace,
                          const geometry::Scene& scene, double margin);
   std::size_t size() const { return entries_.size(); }

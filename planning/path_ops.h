@@ -26,6 +26,30 @@ struct SegmentPieces {
   rs::Segment part;  //!< one piece: the segment's steer and gear, length / count
 };
 SegmentPieces cut_segment(const rs::Segment& segment, double max_piece);
+//! One piece of a path walked by for_each_piece().
+struct PathPiece {
+  geometry::Pose2 start;
+  rs::Segment part;
+  geometry::Pose2 end;  //!< rs::advance(start, part, radius)
+};
+//! Walks `path` driven from `start` in the pieces of cut_segment(segment,
+//! max_piece), segment by segment, arcs of turning radius `radius`; calls
+//! visit(piece) in order and stops at the first call returning false.
+//! True when every piece was visited and accepted.
+template <class Visit>
+bool for_each_piece(const geometry::Pose2& start, const rs::Path& path, double max_piece,
+                    double radius, Visit&& visit) {
+  geometry::Pose2 p = start;
+  for (const rs::Segment& seg : path.segments) {
+    const auto [pieces, part] = cut_segment(seg, max_piece);
+    for (int i = 0; i < pieces; ++i) {
+      const PathPiece piece{p, part, rs::advance(p, part, radius)};
+      if (!visit(piece)) return false;
+      p = piece.end;
+    }
+  }
+  return true;
+}
 //! Pose at the end of `path` driven from `start`.
 geometry::Pose2 final_pose(const geometry::Pose2& start, const rs::Path& path);
 

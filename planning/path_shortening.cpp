@@ -11,17 +11,13 @@ rs::Path shorten_path(const Pose2& start, const rs::Path& path, MotionValidator&
   // Poses along the path and their arc lengths.
   std::vector<Pose2> pose{start};
   std::vector<double> at{0.0};
-  Pose2 p = start;
   double s = 0.0;
-  for (const rs::Segment& seg : path.segments) {
-    const auto [pieces, part] = cut_segment(seg, step);
-    for (int i = 0; i < pieces; ++i) {
-      p = rs::advance(p, part, path.radius);
-      s += part.length;
-      pose.push_back(p);
-      at.push_back(s);
-    }
-  }
+  for_each_piece(start, path, step, path.radius, [&](const PathPiece& q) {
+    s += q.part.length;
+    pose.push_back(q.end);
+    at.push_back(s);
+    return true;
+  });
   const int n = static_cast<int>(pose.size()) - 1;
   if (n < 2) return path;
   rs::Path out{{}, path.radius};

@@ -5,6 +5,17 @@
 // it are joined by no motion at all. The oracle owns the grid, brings it to
 // the current layout once per iteration, and keeps one reachability search
 // per thread that asks (its own lock, so tours ask in parallel).
+//
+// Not ReachGate's grid, on purpose. The gate's fill works on one 64-bit word
+// per column, so its grid has at most 64 heading slices; the oracle's search
+// takes any count and uses 144 by default. Its cores are shrunk by
+// R·Δ/2 + d/2 + 1 mm (geometry/free_grid.h): about 3.3 cm for the shipped
+// chair at 144 slices against 5 cm at 64, so it blocks more cells and
+// separates tighter pockets. On the gate's own grid the oracle would also
+// prove almost nothing new: when the gate is on (it is optional), a leg
+// with one end in the door's component of that grid and one outside is
+// refused before the RRT runs, one with both ends in it is connected
+// there, and every tour's legs start in it.
 
 #include <cstddef>
 #include <memory>

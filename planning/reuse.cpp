@@ -14,57 +14,24 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "planning/motion_validator.h"
+#include "planning/moved_objects.h"
 #include "planning/path_ops.h"
+#include "planning/path_shortening.h"
+#include "planning/reuse_slot.h"
 
 namespace hrs::planning {
 
 namespace {
 
-//! How far from an RRT node a collision query can look: a query piece
-//! starts at a node and is at most step_length long; the chair (and the
-//! C-space's swept slice shape) stays within its half diagonal of its
-//! centre; 5 cm on top for the conservative rounding.
-double query_reach(const geometry::Scene& scene, const TourOptions& tour) {
-  return tour.planner.step_length +
-         0.5 * std::hypot(scene.wheelchair.length, scene.wheelchair.width) + 0.05;
-}
-
-void add_stats(LegStats& into, const LegStats& more) {
-  into.iterations += more.iterations;
-  into.collision_checks += more.collision_checks;
-  into.tree_nodes = std::max(into.tree_nodes, more.tree_nodes);
-  into.time_ms += more.time_ms;
+//! FailureMemory's margin: a collision query of the RRT starts at a node
+//! (or is the goal pose) and drives at most step_length, so its reference
+//! point stays within that of a recorded point (moved_objects.h).
+double failure_margin(const geometry::CSpace& cspace, const TourOptions& tour) {
+  return tour.planner.step_length + cspace.swept_reach() + kOffsetSlack;
 }
 
 }  // namespace
-
-//! The shared outcome of one key in one iteration.
-struct ReusePlanner::Slot {
-  std::mutex mutex;
-  Pose2 from, to;
-  //! The lowest index of a tour that asked for this leg (none: only
-  //! `speculate` computed it, no trace).
-  int first_request = kNoTour;
-  //! The same among tours that asked with planning allowed: only then does
-  //! stage B's outcome count (else stage B ran for `speculate` alone).
-  int first_plan_request = kNoTour;
-  static constexpr int kNoTour = std::numeric_limits<int>::max();
-  bool speculative = false;  //!< computed by speculate_one()
-  //! Its holder is validating or planning (not merely reading a result).
-  std::atomic<bool> working{false};
-  bool database_done = false;  //!< stage A ran
-  bool check_skipped = false;  //!< stage A served the stored path by still_free()
-  LegOutcome database;
-  bool planned_done = false;  //!< stage B ran
-  LegOutcome planned;
-  int fresh_iterations = -1;  //!< RRT iterations of the fresh plan (−1: none)
-  bool tree_reused = false;
-  bool failure_reused = false;
-  bool proven = false;  //!< the fresh plan failed by a proof
-  double proof_ms = 0.0;
-  std::optional<RrtTree> grown;               //!< the fresh plan's tree (tree reuse)
-  std::vector<geometry::Vec2> failed_points;  //!< a failed fresh plan's nodes and goal
-};
 
 ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace& cspace,
                            const TourOptions& tour, const ReuseOptions& options, std::uint64_t seed)
@@ -74,7 +41,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       radius_(scene.wheelchair.turning_radius),
       trees_(cspace, scene.wheelchair.turning_radius, options),
       scene_(scene),
-      failures_(scene_, query_reach(scene, tour)),
+      failures_(scene_, failure_margin(cspace, tour)),
       proofs_(scene_, cspace, options.proof_grid, options.proof_cells) {
   if (options_.samples || options_.steering) {
     const geometry::Box b = geometry::bounding_box(scene.room.polygon);
@@ -90,16 +57,16 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
     if (options_.steering) steering_ = std::make_unique<DecompositionSteering>(*decomposition_);
   }
   if (options_.metrics)
-    measures_ = std::make_unique<LegMeasures>(cspace, radius_, scene.weights.clearance_width);
+    measures_ =
+        std::make_unique<LegMeasures>(scene_, cspace, radius_, scene.weights.clearance_width);
   // PathDatabase::still_free(): a point of a stored path lies within half a trace step of
   // the trace; straight motions are tested as the segment itself and each
   // arc, cut at slice borders, as triangles within one slice's arc length
-  // (radius · 2π/K) of a point on the arc (cspace.h); an object's C-obstacle
-  // pieces A ⊕ (−S_k) lie within swept_reach() of its footprint A, and
-  // offsets round outward by far less than 1 mm.
+  // (radius · 2π/K) of a point on the arc (cspace.h); then swept_reach() and
+  // the slack (moved_objects.h).
   still_free_margin_ = 0.5 * PathDatabase::kTraceStep +
                        radius_ * 2.0 * std::numbers::pi / cspace.slices() + cspace.swept_reach() +
-                       1e-3;
+                       kOffsetSlack;
 }
 
 ReusePlanner::~ReusePlanner() = default;
@@ -168,24 +135,14 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   MotionValidator validator(*cspace_, radius_);
   RrtTree chain;
   chain.nodes.push_back({start, -1, rs::Path{{}, radius_}, 0.0});
-  const double step = tour_.planner.step_length;
-  Pose2 p = start;
   double cost = 0.0;
-  bool blocked = false;
-  for (const rs::Segment& seg : base.segments) {
-    const auto [pieces, part] = cut_segment(seg, step);
-    for (int i = 0; i < pieces && !blocked; ++i) {
-      if (!validator.segment_free(p, part)) {
-        blocked = true;
-        break;
-      }
-      p = rs::advance(p, part, radius_);
-      cost += part.length;
-      chain.nodes.push_back(
-          {p, static_cast<std::int32_t>(chain.nodes.size() - 1), rs::Path{{part}, radius_}, cost});
-    }
-    if (blocked) break;
-  }
+  for_each_piece(start, base, tour_.planner.step_length, radius_, [&](const PathPiece& q) {
+    if (!validator.segment_free(q.start, q.part)) return false;
+    cost += q.part.length;
+    chain.nodes.push_back({q.end, static_cast<std::int32_t>(chain.nodes.size() - 1),
+                           rs::Path{{q.part}, radius_}, cost});
+    return true;
+  });
   LegOutcome out;
   out.planned = true;
   out.source = LegSource::kRepaired;
@@ -211,8 +168,39 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   return out;
 }
 
+LegResult ReusePlanner::fresh_plan(const LegKey& key, const Pose2& from, const Pose2& to,
+                                   std::uint64_t seed, LegPlanner& planner, RrtTree& tree,
+                                   LegStats& stats, ReuseSlot& slot) const {
+  const int cap = planner.options().max_iterations;
+  int budget = options_.budget ? std::min(options_.budget_iterations, cap) : cap;
+  if (options_.backoff) {
+    if (const int failed = failures_.failed_in_a_row(key); failed > 0) {
+      const int halvings = std::min(failed, 30);
+      budget = std::max(std::min(options_.backoff_floor, budget), budget >> halvings);
+    }
+  }
+  const bool staged = options_.proofs && options_.proof_after < budget;
+  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget);
+  add_stats(stats, r.stats);
+  slot.fresh_iterations = r.stats.iterations;
+  if (!r.found && staged) {
+    const auto t0 = std::chrono::steady_clock::now();
+    slot.proven = proofs_.disconnected(from, to);
+    slot.proof_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    stats.time_ms += slot.proof_ms;
+    if (!slot.proven) {
+      // Not proven: the rest of the budget, growing the same tree.
+      r = planner.plan(from, to, splitmix64(seed), tree, budget - options_.proof_after);
+      add_stats(stats, r.stats);
+      slot.fresh_iterations += r.stats.iterations;
+    }
+  }
+  return r;
+}
+
 LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Pose2& to,
-                                  std::uint64_t seed, LegPlanner& planner, Slot& slot) const {
+                                  std::uint64_t seed, LegPlanner& planner, ReuseSlot& slot) const {
   LegOutcome out;
   out.planned = true;
   out.source = LegSource::kPlanned;
@@ -243,31 +231,7 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     }
     out.stats.collision_checks += checks;
   }
-  const int cap = planner.options().max_iterations;
-  int budget = options_.budget ? std::min(options_.budget_iterations, cap) : cap;
-  if (options_.backoff) {
-    if (const int failed = failures_.failed_in_a_row(key); failed > 0) {
-      const int halvings = std::min(failed, 30);
-      budget = std::max(std::min(options_.backoff_floor, budget), budget >> halvings);
-    }
-  }
-  const bool staged = options_.proofs && options_.proof_after < budget;
-  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget);
-  add_stats(out.stats, r.stats);
-  slot.fresh_iterations = r.stats.iterations;
-  if (!r.found && staged) {
-    const auto t0 = std::chrono::steady_clock::now();
-    slot.proven = proofs_.disconnected(from, to);
-    slot.proof_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    out.stats.time_ms += slot.proof_ms;
-    if (!slot.proven) {
-      // Not proven: the rest of the budget, growing the same tree.
-      r = planner.plan(from, to, splitmix64(seed), tree, budget - options_.proof_after);
-      add_stats(out.stats, r.stats);
-      slot.fresh_iterations += r.stats.iterations;
-    }
-  }
+  LegResult r = fresh_plan(key, from, to, seed, planner, tree, out.stats, slot);
   // A proven failure is not recorded for `failures`: the proof looked at the
   // whole layout, not only near the RRT's nodes, so FailureMemory::repeats() could
   // not vouch for it after a move.
@@ -283,12 +247,11 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   return out;
 }
 
-ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request, bool may_plan,
-                                           int tour) {
+ReuseSlot* ReusePlanner::slot_for(const LegRequest& r, bool request, bool may_plan, int tour) {
   std::lock_guard lock(mutex_);
   auto& owned = slots_[r.key];
   if (!owned) {
-    owned = std::make_unique<Slot>();
+    owned = std::make_unique<ReuseSlot>();
     owned->from = r.from;
     owned->to = r.to;
   }
@@ -300,7 +263,7 @@ ReusePlanner::Slot* ReusePlanner::slot_for(const LegRequest& r, bool request, bo
   return owned.get();
 }
 
-LegOutcome ReusePlanner::settle(const LegKey& key, Slot& slot, bool may_plan,
+LegOutcome ReusePlanner::settle(const LegKey& key, ReuseSlot& slot, bool may_plan,
                                 LegPlanner& planner) const {
   slot.working = true;
   if (!slot.database_done) {
@@ -327,7 +290,7 @@ LegOutcome ReusePlanner::settle(const LegKey& key, Slot& slot, bool may_plan,
 
 bool ReusePlanner::speculate_one(std::span<const LegRequest> next, LegPlanner& planner) {
   for (const LegRequest& r : next) {
-    Slot* slot = slot_for(r, false);
+    ReuseSlot* slot = slot_for(r, false);
     std::unique_lock lock(slot->mutex, std::try_to_lock);
     if (!lock.owns_lock()) continue;  // being computed
     if (slot->planned_done || (slot->database_done && slot->database.found)) continue;
@@ -351,32 +314,36 @@ rs::Path ReusePlanner::shortened(const Pose2& from, const rs::Path& path, LegSta
   return out;
 }
 
+LegOutcome ReusePlanner::plan_alone(const LegKey& key, const Pose2& from, const Pose2& to,
+                                    std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
+                                    int tour) {
+  LegOutcome out;
+  out.planned = true;
+  if (!may_plan) return out;
+  LegResult r = planner.plan(from, to, leg_seed(tour_seed, key));
+  out.found = r.found;
+  out.path = std::move(r.path);
+  out.stats = r.stats;
+  // Every tour plans its own legs here: counted per request (the sums
+  // do not depend on the order).
+  std::lock_guard lock(mutex_);
+  ReuseCounters& mine = unshared_[tour];
+  ++mine.leg_requests;
+  if (r.found) {
+    ++mine.legs_planned;
+    ++mine.rrt_iterations[r.stats.iterations];
+  } else {
+    ++mine.legs_failed;
+  }
+  return out;
+}
+
 LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pose2& to,
                                  std::uint64_t tour_seed, bool may_plan, LegPlanner& planner,
                                  std::span<const LegRequest> next, int tour) {
-  if (!options_.any()) {
-    // The baseline exactly: a fresh tree and the tour's own leg seed.
-    LegOutcome out;
-    out.planned = true;
-    if (!may_plan) return out;
-    LegResult r = planner.plan(from, to, leg_seed(tour_seed, key));
-    out.found = r.found;
-    out.path = std::move(r.path);
-    out.stats = r.stats;
-    // Every tour plans its own legs here: counted per request (the sums
-    // do not depend on the order).
-    std::lock_guard lock(mutex_);
-    ReuseCounters& mine = unshared_[tour];
-    ++mine.leg_requests;
-    if (r.found) {
-      ++mine.legs_planned;
-      ++mine.rrt_iterations[r.stats.iterations];
-    } else {
-      ++mine.legs_failed;
-    }
-    return out;
-  }
-  Slot* slot = slot_for({key, from, to}, true, may_plan, tour);
+  // The baseline exactly: a fresh tree and the tour's own leg seed.
+  if (!options_.any()) return plan_alone(key, from, to, tour_seed, may_plan, planner, tour);
+  ReuseSlot* slot = slot_for({key, from, to}, true, may_plan, tour);
   if (options_.paths) {
     // Compute once per key and iteration; tours needing the same leg wait,
     // or with `speculate` first plan their next candidate.
@@ -397,7 +364,7 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
   LegOutcome out;
   out.planned = true;
   if (!may_plan) return out;
-  Slot local;
+  ReuseSlot local;
   out = plan_leg(key, from, to, seed, planner, local);
   std::lock_guard lock(slot->mutex);
   if (!slot->planned_done) {
@@ -421,9 +388,8 @@ ReuseCounters ReusePlanner::end_iteration(int kept_tours) {
   for (const auto& [tour, n] : leg_requests_)
     if (tour < kept_tours) c.leg_requests += n;
   std::set<RootKey> roots;
-  std::vector<Pose2> layout;  // the iteration's object poses, for the stores
-  for (int i = 0; i < cspace_->object_count(); ++i) layout.push_back(cspace_->object_pose(i));
-  for (auto& [key, slot] : slots_) {  // key order: the merge is deterministic
+  const std::vector<Pose2> layout = layout_of(*cspace_);  // the iteration's, for the stores
+  for (auto& [key, slot] : slots_) {                      // key order: the merge is deterministic
     // Computed by `speculate` only, or only for tours the caller dropped: no trace.
     if (slot->first_request >= kept_tours) continue;
     // Stage B counts only when a tour asked for the leg with planning
@@ -431,33 +397,7 @@ ReuseCounters ReusePlanner::end_iteration(int kept_tours) {
     // not `speculate` planned the leg meanwhile, so the stores must not
     // depend on it either.
     const bool planned = slot->planned_done && slot->first_plan_request < kept_tours;
-    if (slot->database.rejected) ++c.legs_rejected;
-    const LegOutcome* outcome = nullptr;
-    if (slot->database_done && slot->database.found) {
-      outcome = &slot->database;
-      ++c.legs_database;
-      if (slot->check_skipped) ++c.checks_skipped;
-      c.database_ms += outcome->stats.time_ms;
-    } else if (planned) {
-      outcome = &slot->planned;
-      if (outcome->found && outcome->source == LegSource::kRepaired) {
-        ++c.legs_repaired;
-        c.repaired_ms += outcome->stats.time_ms;
-      } else if (outcome->found) {
-        ++c.legs_planned;
-        ++c.rrt_iterations[slot->fresh_iterations];
-        c.planned_ms += outcome->stats.time_ms;
-      } else {
-        ++c.legs_failed;
-        c.failed_ms += outcome->stats.time_ms;
-      }
-    }
-    if (planned) {
-      if (slot->tree_reused) ++c.trees_reused;
-      if (slot->failure_reused) ++c.failures_reused;
-      if (slot->proven && !slot->planned.found) ++c.legs_proven;
-      c.proof_ms += slot->proof_ms;
-    }
+    const LegOutcome* outcome = count_slot(*slot, planned, c);
     if (options_.failures && planned) {
       if (!slot->failed_points.empty()) {
         failures_.record(key, slot->from, slot->to, layout, std::move(slot->failed_points));

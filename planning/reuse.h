@@ -19,7 +19,6 @@
 // outcomes into the stores in key order. Leg seeds depend on the iteration
 // seed and the key, never on the tour.
 
-#include <array>
 #include <atomic>
 #include <cstdint>
 #include <map>
@@ -27,20 +26,15 @@
 #include <mutex>
 #include <optional>
 #include <span>
-#include <string>
-#include <string_view>
 #include <vector>
 
 #include "geometry/cspace.h"
-#include "geometry/free_grid.h"
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 #include "planning/decomposition_hooks.h"
 #include "planning/failure_memory.h"
 #include "planning/leg_measures.h"
-#include "planning/motion_validator.h"
 #include "planning/path_database.h"
-#include "planning/path_shortening.h"
 #include "planning/proof_oracle.h"
 #include "planning/reach_gate.h"
 #include "planning/reuse_counters.h"
@@ -51,6 +45,8 @@
 #include "rs/decomposition.h"
 
 namespace hrs::planning {
+
+struct ReuseSlot;  // one key's shared outcome in an iteration (reuse_slot.h)
 
 //! The proposed planner's leg service (a LegProvider) for one scene.
 class ReusePlanner final : public LegProvider {
@@ -99,21 +95,27 @@ class ReusePlanner final : public LegProvider {
   LegMeasures* measures() { return measures_.get(); }
 
  private:
-  struct Slot;
   //! Stage A: the stored path, transformed and validated (no RRT);
   //! `skipped`: served without a check, by PathDatabase::still_free().
   LegOutcome from_database(const LegKey& key, const Pose2& from, const Pose2& to,
                            bool& skipped) const;
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
-                      LegPlanner& planner, Slot& slot) const;
+                      LegPlanner& planner, ReuseSlot& slot) const;
+  //! The fresh RRT of stage B on `tree` (budget, backoff, a staged proof).
+  LegResult fresh_plan(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
+                       LegPlanner& planner, RrtTree& tree, LegStats& stats, ReuseSlot& slot) const;
+  //! Every technique off: the baseline's own plan, counted per tour.
+  LegOutcome plan_alone(const LegKey& key, const Pose2& from, const Pose2& to,
+                        std::uint64_t tour_seed, bool may_plan, LegPlanner& planner, int tour);
+
   //! The iteration's slot of `r.key`, made on first use; `request`: a tour
   //! asks for it (counted, and kept by end_iteration()), `may_plan`: with
   //! planning allowed (then stage B's outcome counts too).
-  Slot* slot_for(const LegRequest& r, bool request, bool may_plan = false, int tour = 0);
+  ReuseSlot* slot_for(const LegRequest& r, bool request, bool may_plan = false, int tour = 0);
   //! Stage A, then (when `may_plan`) stage B, each once per slot; the caller
   //! holds slot.mutex. The outcome a tour gets.
-  LegOutcome settle(const LegKey& key, Slot& slot, bool may_plan, LegPlanner& planner) const;
+  LegOutcome settle(const LegKey& key, ReuseSlot& slot, bool may_plan, LegPlanner& planner) const;
   //! `speculate`: settles the first request of `next` that nobody has
   //! started, with planning allowed; false when there was none.
   bool speculate_one(std::span<const LegRequest> next, LegPlanner& planner);
@@ -139,7 +141,7 @@ class ReusePlanner final : public LegProvider {
   std::uint64_t iteration_seed_ = 0;
   std::mutex mutex_;  //!< guards slots_, leg_requests_ and the slots' `requested`
   std::atomic<std::uint64_t> speculated_{0}, speculated_used_{0};
-  std::map<LegKey, std::unique_ptr<Slot>> slots_;
+  std::map<LegKey, std::unique_ptr<ReuseSlot>> slots_;
   std::map<int, std::uint64_t> leg_requests_;  //!< per tour
   std::map<int, ReuseCounters> unshared_;      //!< all techniques off: per request, per tour
   const ReachGate* gate_ = nullptr;

@@ -107,7 +107,7 @@ TEST(LegMeasures, EqualToFreshMeasurementsAcrossRandomMoves) {
     geometry::Scene scene = geometry::load_scene(file);
     geometry::CSpace cspace(scene);
     const double r = scene.wheelchair.turning_radius;
-    LegMeasures measures(cspace, r, scene.weights.clearance_width);
+    LegMeasures measures(scene, cspace, r, scene.weights.clearance_width);
     MotionValidator validator(cspace, r);
     std::mt19937_64 rng(31);
     const int n = static_cast<int>(scene.objects.size());
