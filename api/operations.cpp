@@ -43,11 +43,7 @@ std::string planner_name(const std::optional<planning::ReuseOptions>& reuse) {
 void require_free(const geometry::Scene& scene, const geometry::CSpace& cspace,
                   const geometry::Pose2& pose, const std::string& what) {
   if (cspace.is_free(pose)) return;
-  const double hl = 0.5 * scene.wheelchair.length, hw = 0.5 * scene.wheelchair.width;
-  geometry::Polygon chair;
-  for (geometry::Vec2 v : {geometry::Vec2{hl, hw}, {-hl, hw}, {-hl, -hw}, {hl, -hw}}) {
-    chair.push_back(geometry::to_world(pose, v));
-  }
+  const geometry::Polygon chair = geometry::chair_footprint(scene.wheelchair, pose);
   std::ostringstream at;
   at << what << " pose " << pose.x << "," << pose.y << "," << pose.theta << ": ";
   if (!geometry::polygon_inside(chair, scene.room.polygon))

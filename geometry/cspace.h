@@ -97,9 +97,7 @@ class CSpace {
   struct Halfplane {
     double nx, ny, c;  //!< {p : nx·px + ny·py <= c}
   };
-  struct Box {
-    double xmin, ymin, xmax, ymax;
-  };
+  using Box = geometry::Box;
   //! One convex obstacle piece (furniture piece or wall piece) in the world.
   struct ConvexPiece {
     std::vector<Vec2> local;    //!< vertices relative to the owner's position (rotated)

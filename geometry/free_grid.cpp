@@ -31,11 +31,7 @@ FreeGrid::FreeGrid(const Scene& scene, FreeGridOptions options) : slices_(option
   if (!(options.cell > 0) || slices_ < 8)
     throw std::invalid_argument("FreeGrid: cell must be > 0 and slices >= 8");
   const Polygon& room = scene.room.polygon;
-  double xmin = room[0].x, xmax = room[0].x, ymin = room[0].y, ymax = room[0].y;
-  for (const Vec2& v : room) {
-    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
-    ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
-  }
+  const auto [xmin, ymin, xmax, ymax] = bounding_box(room);
   // Cells tile the room's box exactly, so every centre is inside it.
   nx_ = std::max(1, static_cast<int>(std::ceil((xmax - xmin) / options.cell)));
   ny_ = std::max(1, static_cast<int>(std::ceil((ymax - ymin) / options.cell)));

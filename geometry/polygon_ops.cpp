@@ -139,15 +139,11 @@ std::vector<Polygon> complement_pieces(const Polygon& room, double margin) {
   using Cdt =
       CGAL::Constrained_Delaunay_triangulation_2<Epick, Tds, CGAL::No_constraint_intersection_tag>;
 
-  double xmin = room[0].x, xmax = room[0].x, ymin = room[0].y, ymax = room[0].y;
-  for (const Vec2& v : room) {
-    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x);
-    ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
-  }
-  const Polygon box = {{xmin - margin, ymin - margin},
-                       {xmax + margin, ymin - margin},
-                       {xmax + margin, ymax + margin},
-                       {xmin - margin, ymax + margin}};
+  const Box b = bounding_box(room);
+  const Polygon box = {{b.xmin - margin, b.ymin - margin},
+                       {b.xmax + margin, b.ymin - margin},
+                       {b.xmax + margin, b.ymax + margin},
+                       {b.xmin - margin, b.ymax + margin}};
   Cdt cdt;
   for (const Polygon* ring : {&box, &room}) {
     for (std::size_t i = 0; i < ring->size(); ++i)

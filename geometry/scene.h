@@ -74,6 +74,16 @@ struct Wheelchair {
   friend bool operator==(const Wheelchair&, const Wheelchair&) = default;
 };
 
+//! The chair's rectangular footprint at `pose` (the pose is its centre),
+//! counter-clockwise from the front-left corner.
+inline Polygon chair_footprint(const Wheelchair& chair, const Pose2& pose) {
+  const double hl = 0.5 * chair.length, hw = 0.5 * chair.width;
+  Polygon p;
+  for (Vec2 v : {Vec2{hl, hw}, Vec2{-hl, hw}, Vec2{-hl, -hw}, Vec2{hl, -hw}})
+    p.push_back(to_world(pose, v));
+  return p;
+}
+
 //! Preference for the nearest wall (interior-design cost, §III-D).
 struct WallPreference {
   std::optional<double> distance;  //!< footprint-to-wall distance

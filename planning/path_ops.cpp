@@ -37,10 +37,4 @@ rs::Path subpath(const rs::Path& path, double s0, double s1) {
   return out;
 }
 
-geometry::Pose2 final_pose(const geometry::Pose2& start, const rs::Path& path) {
-  geometry::Pose2 p = start;
-  for (const rs::Segment& seg : path.segments) p = rs::advance(p, seg, path.radius);
-  return p;
-}
-
 }  // namespace hrs::planning

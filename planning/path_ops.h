@@ -50,7 +50,5 @@ bool for_each_piece(const geometry::Pose2& start, const rs::Path& path, double m
   }
   return true;
 }
-//! Pose at the end of `path` driven from `start`.
-geometry::Pose2 final_pose(const geometry::Pose2& start, const rs::Path& path);
 
 }  // namespace hrs::planning

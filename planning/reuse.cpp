@@ -104,7 +104,7 @@ LegOutcome ReusePlanner::from_database(const LegKey& key, const Pose2& from, con
   skipped = options_.skip_far_checks && e->from == from &&
             PathDatabase::still_free(*e, *cspace_, scene_, still_free_margin_);
   const bool valid = std::abs(path->radius - radius_) <= 1e-12 &&
-                     pose_gap(final_pose(from, *path), to) <= tour_.planner.goal_tolerance &&
+                     pose_gap(rs::end_pose(from, *path), to) <= tour_.planner.goal_tolerance &&
                      (skipped || validator.path_free(from, *path));
   skipped = skipped && valid;
   out.stats.collision_checks = validator.checks();
@@ -158,7 +158,7 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   if (reverse) {
     // The same curve driven the other way: confirm its end and its freedom.
     MotionValidator again(*cspace_, radius_);
-    const bool ok = pose_gap(final_pose(from, path), to) <= tour_.planner.goal_tolerance &&
+    const bool ok = pose_gap(rs::end_pose(from, path), to) <= tour_.planner.goal_tolerance &&
                     again.path_free(from, path);
     out.stats.collision_checks += again.checks();
     if (!ok) return out;

@@ -85,7 +85,7 @@ std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pos
     const double s1 = (i + 1 == steps) ? limit : (i + 1) * step;
     rs::Path piece = subpath(path, i * step, s1);
     if (!validator_.path_free(pose, piece)) break;
-    pose = final_pose(pose, piece);
+    pose = rs::end_pose(pose, piece);
     const double cost = tree.nodes[parent].cost + piece.length();
     tree.nodes.push_back({pose, parent, std::move(piece), cost});
     last = static_cast<std::int32_t>(tree.nodes.size() - 1);

@@ -33,7 +33,7 @@ std::optional<RrtTree> TreeStore::usable(const RootKey& root, const Pose2& from,
     if (parent < 0) continue;
     const Pose2 start = pose[node.parent];
     if (!validator.path_free(start, node.edge)) continue;
-    pose[i] = final_pose(start, node.edge);
+    pose[i] = rs::end_pose(start, node.edge);
     remap[i] = static_cast<std::int32_t>(out.nodes.size());
     out.nodes.push_back({pose[i], parent, node.edge, node.cost});
   }

@@ -63,11 +63,7 @@ TEST(DecompositionSampler, SamplesLieInTheRoomBox) {
   const geometry::Scene scene = test_support::shipped_scene("office.json");
   rs::DecompositionOptions d;
   d.radius = scene.wheelchair.turning_radius;
-  double xmin = 1e300, ymin = 1e300, xmax = -1e300, ymax = -1e300;
-  for (auto v : scene.room.polygon) {
-    xmin = std::min(xmin, v.x), ymin = std::min(ymin, v.y);
-    xmax = std::max(xmax, v.x), ymax = std::max(ymax, v.y);
-  }
+  const auto [xmin, ymin, xmax, ymax] = geometry::bounding_box(scene.room.polygon);
   d.room_width = xmax - xmin;
   d.room_depth = ymax - ymin;
   std::mt19937_64 rng(3);
@@ -101,7 +97,7 @@ TEST(DecompositionSteering, PathsEndAtTheTarget) {
     const Pose2 b{uniform01(rng) * 4, uniform01(rng) * 4,
                   std::numbers::pi * (2 * uniform01(rng) - 1)};
     const rs::Path p = steering.path(a, b, 0.7);
-    EXPECT_LE(test_support::pose_error(final_pose(a, p), b), 1e-6);
+    EXPECT_LE(test_support::pose_error(rs::end_pose(a, p), b), 1e-6);
     EXPECT_NEAR(steering.distance(a, b, 0.7), p.length(), 1e-9);
     EXPECT_GE(p.length(), rs::shortest_length(a, b, 0.7) - 1e-9);
   }
@@ -152,7 +148,7 @@ TEST(PathDatabase, PathBetweenRigidlyMovedObjectsEndsAtTheNewPosesAndIsFree) {
           const std::optional<rs::Path> found = db.transformed(key, new_from, new_to);
           ASSERT_TRUE(found.has_value());
           const rs::Path& path = *found;
-          EXPECT_LE(test_support::pose_error(final_pose(new_from, path), new_to), 1e-9);
+          EXPECT_LE(test_support::pose_error(rs::end_pose(new_from, path), new_to), 1e-9);
           test_support::expect_valid_path(reference, new_from, new_to, path, radius,
                                           file + std::string(" transformed leg"));
           // Only one end moved: not rigid, so the database does not pretend.

@@ -203,7 +203,7 @@ TEST(ShortenPath, SameEndsNeverLongerAndFreeByTheReference) {
       if (!leg.found) continue;
       ++legs;
       const rs::Path p = shorten_path(a, leg.path, v, 0.25);
-      const Pose2 end = final_pose(a, p);
+      const Pose2 end = rs::end_pose(a, p);
       ASSERT_LT(std::hypot(end.x - b.x, end.y - b.y), 1e-6) << file;
       ASSERT_LT(std::abs(geometry::wrap_angle(end.theta - b.theta)), 1e-6) << file;
       ASSERT_LE(p.length(), leg.path.length() + 1e-9) << file;
