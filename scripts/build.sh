@@ -7,8 +7,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
 cd "$root"
-# ccache keys on paths relative to the checkout, so clones and worktrees share hits.
-export CCACHE_BASEDIR="$root"
+# ccache keys on paths relative to the checkout, and not on the build
+# directory (debug builds), so clones and worktrees share hits.
+export CCACHE_BASEDIR="$root" CCACHE_NOHASHDIR=1
 preset="${HRSPACE_PRESET:-default}"
 dir="build"
 [ "$preset" = default ] || dir="build-$preset"

@@ -40,7 +40,7 @@ HRSPACE_PRESET=fuzz "$root/scripts/build.sh" "${targets[@]}"
 # the default ASan bookkeeping halves the rate (rerun a crash input with the
 # defaults for full allocation stacks).
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:malloc_context_size=4:quarantine_size_mb=32"
-export UBSAN_OPTIONS="suppressions=$root/cmake/ubsan.supp:print_stacktrace=1:halt_on_error=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 per=$((seconds / ${#targets[@]}))
 [ "$per" -ge 1 ] || per=1
 status=0

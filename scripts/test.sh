@@ -1,8 +1,16 @@
 #!/usr/bin/env bash
-# Builds hrspace and runs its whole test suite (unit and slow labels).
-# Extra arguments go to ctest, e.g. scripts/test.sh -L unit
+# Builds hrspace and runs its whole test suite (unit and slow labels), then
+# the unit suites again under AddressSanitizer and UndefinedBehaviorSanitizer
+# with assertions live (scripts/sanitize.sh, preset `sanitize`).
+# Extra arguments go to the first ctest only and skip the sanitizer run,
+# e.g. scripts/test.sh -L unit
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/build.sh"
 cd "$root"
-exec ctest --preset default "$@"
+if [ $# -gt 0 ]; then
+  exec ctest --preset default "$@"
+fi
+ctest --preset default
+echo "hrspace: the unit suites under AddressSanitizer and UBSan (preset sanitize)"
+exec "$root/scripts/sanitize.sh"

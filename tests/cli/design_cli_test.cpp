@@ -18,6 +18,8 @@
 #include <string>
 #include <thread>
 
+#include "tests/support/scratch.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -25,7 +27,7 @@ const std::string kBin = HRSPACE_BIN;
 const std::string kBedroom = std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json";
 
 int run(const std::string& args, std::string* err = nullptr) {
-  const std::string errfile = (fs::temp_directory_path() / "hrspace_cli_test.err").string();
+  const std::string errfile = hrs::test_support::scratch_path("cli_test.err").string();
   const int status = std::system((kBin + " " + args + " >/dev/null 2>" + errfile).c_str());
   if (err) {
     std::ifstream in(errfile);
@@ -37,7 +39,7 @@ int run(const std::string& args, std::string* err = nullptr) {
 }
 
 TEST(DesignCli, BadInputExitsTwoWithOneLine) {
-  const std::string out = (fs::temp_directory_path() / "hrspace_cli_bad").string();
+  const std::string out = hrs::test_support::scratch_path("cli_bad").string();
   std::string err;
   EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --planner fast", &err), 2);
   EXPECT_NE(err.find("--planner"), std::string::npos);
@@ -51,7 +53,7 @@ TEST(DesignCli, BadInputExitsTwoWithOneLine) {
 }
 
 TEST(DesignCli, SeveralDesignsGoToNumberedDirectoriesWithAContactSheet) {
-  const fs::path out = fs::temp_directory_path() / "hrspace_cli_multi";
+  const fs::path out = hrs::test_support::scratch_path("cli_multi");
   fs::remove_all(out);
   std::string err;
   ASSERT_EQ(
@@ -70,7 +72,7 @@ TEST(DesignCli, SeveralDesignsGoToNumberedDirectoriesWithAContactSheet) {
 }
 
 TEST(DesignCli, CtrlCWritesTheBestDesignSoFarAndExits130) {
-  const fs::path out = fs::temp_directory_path() / "hrspace_cli_sigint";
+  const fs::path out = hrs::test_support::scratch_path("cli_sigint");
   fs::remove_all(out);
   const pid_t pid = fork();
   ASSERT_GE(pid, 0);
@@ -119,7 +121,7 @@ int design_stopped_by(int sig, const fs::path& out, int ms = 2500) {
 // Hardening (issue 20): SIGTERM and SIGHUP stop like Ctrl-C.
 TEST(DesignCli, FaultsLoseNoData_SigtermAndSighupWriteTheBestDesign) {
   for (const int sig : {SIGTERM, SIGHUP}) {
-    const fs::path out = fs::temp_directory_path() / ("hrspace_cli_sig" + std::to_string(sig));
+    const fs::path out = hrs::test_support::scratch_path("cli_sig" + std::to_string(sig));
     fs::remove_all(out);
     EXPECT_EQ(design_stopped_by(sig, out), 128 + sig);
     std::ifstream in(out / "report.json");
@@ -133,7 +135,7 @@ TEST(DesignCli, FaultsLoseNoData_SigtermAndSighupWriteTheBestDesign) {
 // Hardening: a rerun with fewer designs removes the earlier run's extra ones;
 // foreign files in a numbered directory are refused before any work.
 TEST(DesignCli, FaultsLoseNoData_StaleOutputsAreRemoved) {
-  const fs::path out = fs::temp_directory_path() / "hrspace_cli_stale";
+  const fs::path out = hrs::test_support::scratch_path("cli_stale");
   fs::remove_all(out);
   ASSERT_EQ(run("design " + kBedroom + " --out " + out.string() + " --designs 3 --iterations 1"),
             0);
@@ -199,7 +201,7 @@ bool catches_sigint(pid_t pid) {
 // (the enumeration starts right after); without the stop check in the
 // enumeration the command would run for minutes.
 TEST(DesignCli, CtrlCDuringALongEnumerationExits130Promptly) {
-  const fs::path dir = fs::temp_directory_path() / "hrspace_cli_enum";
+  const fs::path dir = hrs::test_support::scratch_path("cli_enum");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene = dir / "heavy.json", out = dir / "out", err = dir / "err.txt";
@@ -248,7 +250,7 @@ TEST(DesignCli, CtrlCDuringALongEnumerationExits130Promptly) {
 
 // Hardening: --out is checked before the work, not after it.
 TEST(DesignCli, FaultsLoseNoData_UnwritableOutIsRefusedFirst) {
-  const fs::path file = fs::temp_directory_path() / "hrspace_cli_file";
+  const fs::path file = hrs::test_support::scratch_path("cli_file");
   std::ofstream(file) << "x";
   std::string err;
   const auto t0 = std::chrono::steady_clock::now();

@@ -18,6 +18,7 @@
 #include "optimize/design_io.h"
 #include "rs/reeds_shepp.h"
 #include "tests/support/paths.h"
+#include "tests/support/scratch.h"
 
 namespace hrs::optimize {
 namespace {
@@ -164,7 +165,7 @@ TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
   EXPECT_TRUE(result.valid);
   EXPECT_EQ(result.proposals, 25);
   EXPECT_LE(result.final.total(), result.initial.total() + 1e-12);
-  const auto dir = std::filesystem::temp_directory_path() / "hrspace_design_test";
+  const auto dir = test_support::scratch_path("design_test");
   std::filesystem::remove_all(dir);
   write_design(result, {1, "baseline", 25}, dir);
   const int found = check_design_dir(scene, dir);
