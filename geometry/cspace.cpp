@@ -102,10 +102,8 @@ void swept_cover(const Vec2 (&corners)[4], double a, double b, Vec2 (&out)[12]) 
 CSpace::CSpace(const Scene& scene, CSpaceOptions options) : slices_(options.slices) {
   if (slices_ < 4) throw std::invalid_argument("CSpace: at least 4 orientation slices");
   room_ = scene.room.polygon;
-  room_box_ = {room_[0].x, room_[0].y, room_[0].x, room_[0].y};
+  room_box_ = bounding_box(room_);
   for (const Vec2& v : room_) {
-    room_box_.xmin = std::min(room_box_.xmin, v.x), room_box_.xmax = std::max(room_box_.xmax, v.x);
-    room_box_.ymin = std::min(room_box_.ymin, v.y), room_box_.ymax = std::max(room_box_.ymax, v.y);
     if (std::abs(v.x) > kMaxCoordinate || std::abs(v.y) > kMaxCoordinate)
       throw std::invalid_argument("CSpace: room coordinates beyond 1 km");
   }
