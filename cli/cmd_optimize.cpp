@@ -17,6 +17,7 @@
 #include <functional>
 #include <iostream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -226,107 +227,162 @@ void apply_disable(const std::optional<std::string>& list, optimize::DesignOptio
   }
 }
 
-}  // namespace
+//! What one `hrspace design` command asks for.
+struct DesignRequest {
+  std::string scene_path;  //!< a scene file, or "-" for stdin
+  std::string out;
+  std::optional<planning::ReuseOptions> reuse;  //!< set: the proposed planner
+  std::string planner;                          //!< "baseline" or "proposed"
+  long seed = 1, iterations = 700, designs = 1, threads = 0;
+  std::optional<std::string> disable;
+};
 
-int cmd_design(const Argv& argv) {
-  const Args args(
-      argv,
-      {"out", "seed", "iterations", "designs", "threads", "planner", "reuse", "weights", "disable"});
-  if (args.help()) {
-    std::cout << "usage: " << kDesignUsage;
-    return 0;
-  }
+//! The command's arguments, checked in this order (the first bad one is reported).
+DesignRequest design_request(const Args& args) {
   args.expect_positional(1, "hrspace design SCENE --out DIR [options] (see --help)");
   const auto out = args.get("out");
   if (!out) throw InputError("--out DIR is required (see --help)");
-  const std::optional<planning::ReuseOptions> reuse =
-      planner_option(args, "all,budget,backoff,proofs", "all");
-  const std::string planner = reuse ? "proposed" : "baseline";
-  const long seed = args.integer("seed", 1, 0, 1L << 53);
-  const long iterations = args.integer("iterations", 700, 0, 100000000);
-  const long designs = args.integer("designs", 1, 1, 1000);
-  const long threads = args.integer("threads", 0, 0, 1024);
-  const std::optional<std::string> disable = args.get("disable");
+  DesignRequest r;
+  r.out = *out;
+  r.reuse = planner_option(args, "all,budget,backoff,proofs", "all");
+  r.planner = r.reuse ? "proposed" : "baseline";
+  r.seed = args.integer("seed", 1, 0, 1L << 53);
+  r.iterations = args.integer("iterations", 700, 0, 100000000);
+  r.designs = args.integer("designs", 1, 1, 1000);
+  r.threads = args.integer("threads", 0, 0, 1024);
+  r.disable = args.get("disable");
   {
     optimize::DesignOptions check;  // refuse a bad --disable before any work
-    apply_disable(disable, check);
+    apply_disable(r.disable, check);
   }
+  r.scene_path = args.positional()[0];
+  return r;
+}
 
-  const std::string path = args.positional()[0];
+//! Reads the scene and checks it has sequences to tour, checks --out, then
+//! applies --weights: everything that can fail on input, before any work.
+geometry::Scene prepare_design(const DesignRequest& r, const Args& args) {
+  const std::string& path = r.scene_path;
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
   geometry::require_sequences(scene, path == "-" ? "stdin" : path);
   // The output directory before any work: an unwritable --out loses nothing.
-  optimize::require_writable_directory(*out);
-  remove_stale_outputs(*out, designs > 1, designs,
+  optimize::require_writable_directory(r.out);
+  remove_stale_outputs(r.out, r.designs > 1, r.designs,
                        true);  // refuses foreign files now, not at the end
   apply_weights(args, scene);
+  return scene;
+}
 
-  g_interrupted.store(false);
-  g_signal.store(0);
-  struct sigaction action {};
-  action.sa_handler = on_design_stop_signal;
-  sigemptyset(&action.sa_mask);
-  struct sigaction previous[std::size(kStopSignals)]{};
-  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
-    sigaction(kStopSignals[i], &action, &previous[i]);
+//! on_design_stop_signal for the stop signals while designs run; restore()
+//! puts back the handlers it replaced.
+class StopSignalHandlers {
+ public:
+  //! Clears any earlier stop and installs the handler.
+  void install() {
+    g_interrupted.store(false);
+    g_signal.store(0);
+    struct sigaction action {};
+    action.sa_handler = on_design_stop_signal;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+      sigaction(kStopSignals[i], &action, &previous_[i]);
+  }
+  void restore() const {
+    for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
+      sigaction(kStopSignals[i], &previous_[i], nullptr);
+  }
 
+ private:
+  struct sigaction previous_[std::size(kStopSignals)]{};
+};
+
+//! Exit status after a stop signal: 128 + the signal (SIGINT when unknown).
+int stop_exit_status() { return 128 + (g_signal.load() ? g_signal.load() : SIGINT); }
+
+//! Where design `d` (from 0) goes: --out itself, or --out/d+1 with several.
+std::filesystem::path design_dir(const DesignRequest& r, long d) {
+  return r.designs > 1 ? std::filesystem::path(r.out) / std::to_string(d + 1)
+                       : std::filesystem::path(r.out);
+}
+
+//! Runs design `d` (seed + d), writes its files, keeps its SVG for the
+//! contact sheet and prints its summary. True when a stop was requested: the
+//! design was written as it stood, or (stopped before its first iteration)
+//! nothing was written for it.
+bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bool tty,
+                std::vector<std::string>& svgs) {
+  // The same options as the Python module's design() (api/operations.h).
+  optimize::DesignOptions options =
+      api::design_options(static_cast<std::uint64_t>(r.seed + d), static_cast<int>(r.iterations),
+                          static_cast<int>(r.threads), r.reuse);
+  apply_disable(r.disable, options);
+  const auto progress = progress_bar(
+      tty, r.iterations, r.designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
+  optimize::DesignResult result;
+  try {
+    result = optimize::design(scene, options, &g_interrupted, progress);
+  } catch (const Interrupted&) {
+    // Stopped while enumerating the sequences or generating goal poses:
+    // there is no design to write (earlier designs of --designs are kept).
+    if (tty) std::cerr << "\r\033[K" << std::flush;
+    std::fprintf(stderr,
+                 "hrspace design: interrupted before the first iteration%s; nothing written%s\n",
+                 r.designs > 1 ? (" of design " + std::to_string(d + 1)).c_str() : "",
+                 r.designs > 1 ? " for it" : "");
+    return true;
+  }
+  if (tty) std::cerr << "\r\033[K" << std::flush;
+  const std::filesystem::path dir = design_dir(r, d);
+  optimize::RunInfo info{options.seed, r.planner, static_cast<int>(r.iterations)};
+  optimize::write_design(result, info, dir);
+  svgs.push_back(
+      optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
+  print_summary(dir, result);
+  return result.stopped || g_interrupted.load();
+}
+
+//! After the designs: the contact sheet of several, then the removal (with a
+//! note) of an earlier run's outputs beyond what this run wrote, which would
+//! sit beside the new contact sheet unnoticed.
+void finish_outputs(const DesignRequest& r, const std::vector<std::string>& svgs) {
+  if (r.designs > 1) {
+    optimize::write_files_atomic(
+        {{std::filesystem::path(r.out) / "contact_sheet.svg", optimize::contact_sheet_svg(svgs)}});
+  }
+  const auto written = static_cast<long>(svgs.size());
+  if (const int removed = remove_stale_outputs(r.out, r.designs > 1, written, false)) {
+    std::fprintf(stderr, "hrspace design: removed %d stale output(s) of an earlier run in %s\n",
+                 removed, r.out.c_str());
+  }
+}
+
+}  // namespace
+
+int cmd_design(const Argv& argv) {
+  const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
+                         "weights", "disable"});
+  if (args.help()) {
+    std::cout << "usage: " << kDesignUsage;
+    return 0;
+  }
+  const DesignRequest request = design_request(args);
+  const geometry::Scene scene = prepare_design(request, args);
+  StopSignalHandlers handlers;
+  handlers.install();
   const bool tty = isatty(STDERR_FILENO) != 0;
   std::vector<std::string> svgs;
   bool interrupted = false;
-  for (long d = 0; d < designs && !interrupted; ++d) {
-    // The same options as the Python module's design() (api/operations.h).
-    optimize::DesignOptions options =
-        api::design_options(static_cast<std::uint64_t>(seed + d), static_cast<int>(iterations),
-                            static_cast<int>(threads), reuse);
-    apply_disable(disable, options);
-    const auto progress = progress_bar(
-        tty, iterations, designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
-    optimize::DesignResult result;
-    try {
-      result = optimize::design(scene, options, &g_interrupted, progress);
-    } catch (const Interrupted&) {
-      // Stopped while enumerating the sequences or generating goal poses:
-      // there is no design to write (earlier designs of --designs are kept).
-      if (tty) std::cerr << "\r\033[K" << std::flush;
-      std::fprintf(stderr,
-                   "hrspace design: interrupted before the first iteration%s; nothing written%s\n",
-                   designs > 1 ? (" of design " + std::to_string(d + 1)).c_str() : "",
-                   designs > 1 ? " for it" : "");
-      interrupted = true;
-      break;
-    }
-    if (tty) std::cerr << "\r\033[K" << std::flush;
-    const std::filesystem::path dir = designs > 1
-                                          ? std::filesystem::path(*out) / std::to_string(d + 1)
-                                          : std::filesystem::path(*out);
-    optimize::RunInfo info{options.seed, planner, static_cast<int>(iterations)};
-    optimize::write_design(result, info, dir);
-    svgs.push_back(
-        optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
-    print_summary(dir, result);
-    interrupted = result.stopped || g_interrupted.load();
-  }
+  for (long d = 0; d < request.designs && !interrupted; ++d)
+    interrupted = run_design(request, scene, d, tty, svgs);
   if (svgs.empty()) {  // interrupted before the first design: --out is left as it was
-    for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
-      sigaction(kStopSignals[i], &previous[i], nullptr);
-    return 128 + (g_signal.load() ? g_signal.load() : SIGINT);
+    handlers.restore();
+    return stop_exit_status();
   }
-  if (designs > 1) {
-    optimize::write_files_atomic(
-        {{std::filesystem::path(*out) / "contact_sheet.svg", optimize::contact_sheet_svg(svgs)}});
-  }
-  // Outputs of an earlier run beyond what this run wrote would sit beside the
-  // new contact sheet unnoticed.
-  const auto written = static_cast<long>(svgs.size());
-  if (const int removed = remove_stale_outputs(*out, designs > 1, written, false)) {
-    std::fprintf(stderr, "hrspace design: removed %d stale output(s) of an earlier run in %s\n",
-                 removed, out->c_str());
-  }
+  finish_outputs(request, svgs);
   std::fflush(stdout);
-  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
-    sigaction(kStopSignals[i], &previous[i], nullptr);
-  return interrupted ? 128 + (g_signal.load() ? g_signal.load() : SIGINT) : 0;
+  handlers.restore();
+  return interrupted ? stop_exit_status() : 0;
 }
 
 }  // namespace hrs::cli

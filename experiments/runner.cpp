@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -251,6 +252,95 @@ void prepare_study_dir(const fs::path& study_dir) {
   fs::remove(study_dir / ".writable", ec);
 }
 
+//! The runs of `runs` with no stored result yet; the others count as skipped.
+std::vector<const RunSpec*> runs_not_stored(const fs::path& study_dir,
+                                            const std::vector<RunSpec>& runs, int& skipped) {
+  std::vector<const RunSpec*> todo;
+  for (const RunSpec& r : runs) {
+    if (fs::exists(run_file(study_dir, r.key)))
+      ++skipped;
+    else
+      todo.push_back(&r);
+  }
+  return todo;
+}
+
+//! The runs to do, shared by the runner's workers. Each worker takes the next
+//! run not started; a stop request ends the workers after their current run,
+//! whose result is dropped when stopped. What became of each run goes to the
+//! report.
+class RunQueue {
+ public:
+  RunQueue(const Study& study, const StudyConfig& config, const fs::path& study_dir,
+           const RunnerOptions& options, const std::vector<const RunSpec*>& todo,
+           Recordings& recordings, const ProgressBar& progress, RunnerReport& report)
+      : study_(study),
+        config_(config),
+        study_dir_(study_dir),
+        options_(options),
+        todo_(todo),
+        recordings_(recordings),
+        progress_(progress),
+        report_(report) {}
+
+  //! One worker's loop: until no run is left, a stop is requested or a run stopped.
+  void work() {
+    for (;;) {
+      if (options_.stop && options_.stop->load()) return;
+      const std::size_t k = next_.fetch_add(1);
+      if (k >= todo_.size()) return;
+      if (!run_one(*todo_[k])) return;
+    }
+  }
+
+ private:
+  //! Runs and stores one run; false when it was stopped (the worker ends).
+  bool run_one(const RunSpec& spec) {
+    RunContext context{config_, study_dir_, options_.stop, &recordings_};
+    try {
+      const RunOutput out = study_.run(spec, context);
+      if (out.stopped) {
+        std::lock_guard lock(report_mutex_);
+        report_.stopped = true;
+        return false;
+      }
+      store_run(study_dir_, spec, out, config_, study_.name);
+      std::lock_guard lock(report_mutex_);
+      ++report_.done;
+      progress_.show(report_.done + report_.failed, spec.key);
+    } catch (const Interrupted&) {  // stopped before the design's first iteration
+      std::lock_guard lock(report_mutex_);
+      report_.stopped = true;
+      return false;
+    } catch (const std::exception& e) {
+      std::lock_guard lock(report_mutex_);
+      ++report_.failed;
+      report_.errors.push_back(spec.key + ": " + e.what());
+      progress_.show(report_.done + report_.failed, spec.key + " FAILED");
+    }
+    return true;
+  }
+
+  const Study& study_;
+  const StudyConfig& config_;
+  const fs::path& study_dir_;
+  const RunnerOptions& options_;
+  const std::vector<const RunSpec*>& todo_;
+  Recordings& recordings_;
+  const ProgressBar& progress_;
+  RunnerReport& report_;
+  std::atomic<std::size_t> next_{0};
+  std::mutex report_mutex_;  //!< guards report_ and progress_
+};
+
+//! Runs `work` on `jobs` threads, this one among them, and waits for all.
+void run_on_threads(int jobs, const std::function<void()>& work) {
+  std::vector<std::thread> pool;
+  for (int j = 1; j < jobs; ++j) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+}
+
 }  // namespace
 
 RunnerReport run_study(const Study& study, const StudyConfig& config,
@@ -262,56 +352,14 @@ RunnerReport run_study(const Study& study, const StudyConfig& config,
   RunnerReport report;
   report.total = static_cast<int>(all.size());
   report.in_shard = static_cast<int>(mine.size());
-  std::vector<const RunSpec*> todo;
-  for (const RunSpec& r : mine) {
-    if (fs::exists(run_file(study_dir, r.key)))
-      ++report.skipped;
-    else
-      todo.push_back(&r);
-  }
+  const std::vector<const RunSpec*> todo = runs_not_stored(study_dir, mine, report.skipped);
 
   Recordings recordings(config.out / "recordings");
-  std::atomic<std::size_t> next{0};
-  std::mutex report_mutex;
   const ProgressBar progress(options.progress, study.name, static_cast<int>(todo.size()));
   progress.show(0, "");
-  // Each worker takes the next run not started; a stop request ends the
-  // workers after their current run, whose result is dropped when stopped.
-  auto worker = [&] {
-    for (;;) {
-      if (options.stop && options.stop->load()) return;
-      const std::size_t k = next.fetch_add(1);
-      if (k >= todo.size()) return;
-      const RunSpec& spec = *todo[k];
-      RunContext context{config, study_dir, options.stop, &recordings};
-      try {
-        const RunOutput out = study.run(spec, context);
-        if (out.stopped) {
-          std::lock_guard lock(report_mutex);
-          report.stopped = true;
-          return;
-        }
-        store_run(study_dir, spec, out, config, study.name);
-        std::lock_guard lock(report_mutex);
-        ++report.done;
-        progress.show(report.done + report.failed, spec.key);
-      } catch (const Interrupted&) {  // stopped before the design's first iteration
-        std::lock_guard lock(report_mutex);
-        report.stopped = true;
-        return;
-      } catch (const std::exception& e) {
-        std::lock_guard lock(report_mutex);
-        ++report.failed;
-        report.errors.push_back(spec.key + ": " + e.what());
-        progress.show(report.done + report.failed, spec.key + " FAILED");
-      }
-    }
-  };
+  RunQueue queue(study, config, study_dir, options, todo, recordings, progress, report);
   const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
-  std::vector<std::thread> pool;
-  for (int j = 1; j < jobs; ++j) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  run_on_threads(jobs, [&queue] { queue.work(); });
   progress.clear();
   if (options.stop && options.stop->load()) report.stopped = true;
   report.missing = write_tables(study, config);

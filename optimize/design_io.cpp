@@ -174,131 +174,171 @@ std::string tours_document(const DesignResult& result) {
   return planning::tours_json(result.tours, likelihoods, /*timings=*/false, /*indent=*/1) + "\n";
 }
 
-std::string report_document(const DesignResult& result, const RunInfo& info) {
+namespace {
+
+// ---- report.json sections -------------------------------------------------
+
+//! "cost"/"terms": every cost term of the input and of the best layout.
+json terms_comparison_json(const DesignResult& result) {
   json terms = json::object();
   const json initial = terms_json(result.initial), final = terms_json(result.final);
   for (const auto& [name, value] : initial.items())
     terms[name] = {{"initial", value}, {"final", final[name]}};
-  json trace = json::array();
-  for (const auto& s : result.trace) {
-    const auto& e = s.anneal;
-    json step = {
-        {"iteration", e.iteration + 1},
-        {"temperature", e.temperature},
-        {"object", e.object >= 0 ? json(result.layout.objects[e.object].id) : json(nullptr)},
-        {"move", e.rotation ? "rotate" : (e.jump ? "jump" : "translate")},
-        {"valid", e.valid},
-        {"accepted", e.accepted},
-        {"proposed", finite_or_null(e.proposed_cost)},
-        {"current", e.current_cost},
-        {"best", finite_or_null(e.best_cost)}};
-    if (s.planned) {
-      step["tours_found"] = s.proposed.tours_found;
-      if (s.rejected_early) {
-        step["rejected_early"] = true;
-        step["tours_planned"] = s.proposed.tours_total;
-      }
-      step["planning_ms"] = s.planning_ms;
-      if (s.legs) {
-        const auto& c = *s.legs;
-        step["legs"] = {{"database", c.legs_database}, {"repaired", c.legs_repaired},
-                        {"planned", c.legs_planned},   {"failed", c.legs_failed},
-                        {"failed_ms", c.failed_ms},    {"planned_ms", c.planned_ms}};
-      }
+  return terms;
+}
+
+//! One entry of "trace": the annealer's step, then its planning when planned.
+json trace_step_json(const DesignStep& s, const geometry::Scene& layout) {
+  const auto& e = s.anneal;
+  json step = {{"iteration", e.iteration + 1},
+               {"temperature", e.temperature},
+               {"object", e.object >= 0 ? json(layout.objects[e.object].id) : json(nullptr)},
+               {"move", e.rotation ? "rotate" : (e.jump ? "jump" : "translate")},
+               {"valid", e.valid},
+               {"accepted", e.accepted},
+               {"proposed", finite_or_null(e.proposed_cost)},
+               {"current", e.current_cost},
+               {"best", finite_or_null(e.best_cost)}};
+  if (s.planned) {
+    step["tours_found"] = s.proposed.tours_found;
+    if (s.rejected_early) {
+      step["rejected_early"] = true;
+      step["tours_planned"] = s.proposed.tours_total;
     }
-    trace.push_back(std::move(step));
+    step["planning_ms"] = s.planning_ms;
+    if (s.legs) {
+      const auto& c = *s.legs;
+      step["legs"] = {{"database", c.legs_database}, {"repaired", c.legs_repaired},
+                      {"planned", c.legs_planned},   {"failed", c.legs_failed},
+                      {"failed_ms", c.failed_ms},    {"planned_ms", c.planned_ms}};
+    }
   }
+  return step;
+}
+
+//! "trace": one entry per iteration.
+json trace_json(const DesignResult& result) {
+  json trace = json::array();
+  for (const auto& s : result.trace) trace.push_back(trace_step_json(s, result.layout));
+  return trace;
+}
+
+//! "sequences": the M sequences with their likelihoods, most likely first.
+json sequences_json(const DesignResult& result) {
   json seqs = json::array();
   for (const auto& s : result.sequences)
     seqs.push_back({{"sequence", s.nodes}, {"likelihood", s.likelihood}});
-  json r = {
-      {"scene", result.layout.name},
-      {"seed", info.seed},
-      {"planner", info.planner},
-      {"iterations", info.iterations},
-      {"iterations_run", result.proposals},
-      {"stopped", result.stopped},
-      {"valid", result.valid},
-      {"threads", result.threads},
-      {"planned_every_iteration", result.planned_every_iteration},
-      {"tours_invalidated", result.tours_invalidated},
-      {"tours_planned", result.tours_planned},
-      {"early_rejection",
-       {{"proposals", result.early.proposals},
-        {"tours_skipped", result.early.tours_skipped},
-        {"legs_skipped", result.early.legs_skipped},
-        {"planning_saved_estimate_s", result.early.saved_s_estimate}}},
-      {"unblock",
-       {{"walled_before", result.unblock.walled_before},
-        {"walled_after", result.unblock.walled_after},
-        {"proposals", result.unblock.proposals},
-        {"accepted", result.unblock.accepted}}},
-      {"refused_legs",
-       {{"legs", result.legs_refused},
-        {"reachability_fills", result.gate_fills},
-        {"reachability_ms", result.gate_ms}}},
-      {"cost",
-       {{"initial", result.initial.total()}, {"final", result.final.total()}, {"terms", terms}}},
-      {"time_s",
-       {{"total", result.time_total_s},
-        {"planning", result.time_planning_s},
-        {"planning_share",
-         result.time_total_s > 0 ? result.time_planning_s / result.time_total_s : 0.0}}},
-      {"acceptance_rate",
-       result.proposals > 0 ? static_cast<double>(result.accepted) / result.proposals : 0.0},
-      {"accepted", result.accepted},
-      {"valid_proposals", result.valid_proposals},
-      {"temperature", {{"start", result.t_start}, {"end", result.t_end}}},
-      {"sequences", seqs},
-      {"trace", trace}};
-  if (result.proposed) {
-    // Paper §V: where the legs came from (each key counted once per
-    // iteration) and the RRT iterations of the fresh plans (Fig. "rrt-it").
-    const auto& c = result.counters;
-    json histogram = json::array();
-    for (const auto& [iterations, count] : c.rrt_iterations)
-      histogram.push_back({{"iterations", iterations}, {"legs", count}});
-    r["reuse"] = {{"techniques", result.reuse},
-                  {"legs_database", c.legs_database},
-                  {"legs_repaired", c.legs_repaired},
-                  {"legs_planned", c.legs_planned},
-                  {"legs_failed", c.legs_failed},
-                  {"legs_rejected", c.legs_rejected},
-                  {"checks_skipped", c.checks_skipped},
-                  {"trees_reused", c.trees_reused},
-                  {"failures_reused", c.failures_reused},
-                  {"legs_proven", c.legs_proven},
-                  {"leg_requests", c.leg_requests},
-                  {"rrt_iterations_histogram", histogram},
-                  {"time_ms",
-                   {{"database", c.database_ms},
-                    {"repaired", c.repaired_ms},
-                    {"planned", c.planned_ms},
-                    {"failed", c.failed_ms},
-                    {"proofs", c.proof_ms}}}};
-  }
-  return r.dump(1) + "\n";
+  return seqs;
 }
 
-std::string design_svg(const DesignResult& result, const std::string& title) {
-  const auto& scene = result.layout;
-  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
-  for (const auto& p : scene.room.polygon) {
-    xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
-  }
-  const double scale = 100.0;  // pixels per metre
-  const Frame f{xmin, ymax, scale, 20.0, 40.0};
-  const double width = (xmax - xmin) * scale + 40.0, height = (ymax - ymin) * scale + 105.0;
-  std::ostringstream s;
-  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width) << "\" height=\""
-    << num(height) << "\" viewBox=\"0 0 " << num(width) << " " << num(height)
+//! The report's sections about how the run went: what was asked, how the
+//! proposals fared, what was planned or skipped, costs, time and trace.
+json run_report_json(const DesignResult& result, const RunInfo& info) {
+  return {{"scene", result.layout.name},
+          {"seed", info.seed},
+          {"planner", info.planner},
+          {"iterations", info.iterations},
+          {"iterations_run", result.proposals},
+          {"stopped", result.stopped},
+          {"valid", result.valid},
+          {"threads", result.threads},
+          {"planned_every_iteration", result.planned_every_iteration},
+          {"tours_invalidated", result.tours_invalidated},
+          {"tours_planned", result.tours_planned},
+          {"early_rejection",
+           {{"proposals", result.early.proposals},
+            {"tours_skipped", result.early.tours_skipped},
+            {"legs_skipped", result.early.legs_skipped},
+            {"planning_saved_estimate_s", result.early.saved_s_estimate}}},
+          {"unblock",
+           {{"walled_before", result.unblock.walled_before},
+            {"walled_after", result.unblock.walled_after},
+            {"proposals", result.unblock.proposals},
+            {"accepted", result.unblock.accepted}}},
+          {"refused_legs",
+           {{"legs", result.legs_refused},
+            {"reachability_fills", result.gate_fills},
+            {"reachability_ms", result.gate_ms}}},
+          {"cost",
+           {{"initial", result.initial.total()},
+            {"final", result.final.total()},
+            {"terms", terms_comparison_json(result)}}},
+          {"time_s",
+           {{"total", result.time_total_s},
+            {"planning", result.time_planning_s},
+            {"planning_share",
+             result.time_total_s > 0 ? result.time_planning_s / result.time_total_s : 0.0}}},
+          {"acceptance_rate",
+           result.proposals > 0 ? static_cast<double>(result.accepted) / result.proposals : 0.0},
+          {"accepted", result.accepted},
+          {"valid_proposals", result.valid_proposals},
+          {"temperature", {{"start", result.t_start}, {"end", result.t_end}}},
+          {"sequences", sequences_json(result)},
+          {"trace", trace_json(result)}};
+}
+
+//! "reuse" of the proposed planner (paper §V): where the legs came from (each
+//! key counted once per iteration) and the RRT iterations of the fresh plans
+//! (Fig. "rrt-it").
+json reuse_json(const DesignResult& result) {
+  const auto& c = result.counters;
+  json histogram = json::array();
+  for (const auto& [iterations, count] : c.rrt_iterations)
+    histogram.push_back({{"iterations", iterations}, {"legs", count}});
+  return {{"techniques", result.reuse},
+          {"legs_database", c.legs_database},
+          {"legs_repaired", c.legs_repaired},
+          {"legs_planned", c.legs_planned},
+          {"legs_failed", c.legs_failed},
+          {"legs_rejected", c.legs_rejected},
+          {"checks_skipped", c.checks_skipped},
+          {"trees_reused", c.trees_reused},
+          {"failures_reused", c.failures_reused},
+          {"legs_proven", c.legs_proven},
+          {"leg_requests", c.leg_requests},
+          {"rrt_iterations_histogram", histogram},
+          {"time_ms",
+           {{"database", c.database_ms},
+            {"repaired", c.repaired_ms},
+            {"planned", c.planned_ms},
+            {"failed", c.failed_ms},
+            {"proofs", c.proof_ms}}}};
+}
+
+// ---- design.svg layers ----------------------------------------------------
+
+constexpr double kPixelsPerMetre = 100.0;
+
+//! The drawing's size and its map from scene metres: the room's bounding box
+//! with margins for the title above and the legend below.
+struct Canvas {
+  Frame frame;
+  double width, height;
+};
+
+Canvas room_canvas(const geometry::Scene& scene) {
+  const auto [xmin, ymin, xmax, ymax] = geometry::bounding_box(scene.room.polygon);
+  const double scale = kPixelsPerMetre;
+  return {Frame{xmin, ymax, scale, 20.0, 40.0}, (xmax - xmin) * scale + 40.0,
+          (ymax - ymin) * scale + 105.0};
+}
+
+//! The <svg> element, a white background and the title.
+void svg_open(std::ostringstream& s, const Canvas& canvas, const std::string& title) {
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(canvas.width) << "\" height=\""
+    << num(canvas.height) << "\" viewBox=\"0 0 " << num(canvas.width) << " " << num(canvas.height)
     << "\" font-family=\"sans-serif\">\n";
   s << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   s << "<text x=\"20\" y=\"25\" font-size=\"15\">" << escape(title) << "</text>\n";
+}
+
+void room_layer(std::ostringstream& s, const Frame& f, const geometry::Scene& scene) {
   s << "<polygon points=\"" << f.points(scene.room.polygon)
     << "\" fill=\"#f7f7f2\" stroke=\"#222\" stroke-width=\"4\"/>\n";
-  // Door: its clear zone, then the opening drawn over the wall.
+}
+
+//! The door: its clear zone, then the opening drawn over the wall, labelled.
+void door_layer(std::ostringstream& s, const Frame& f, const geometry::Scene& scene) {
   s << "<polygon points=\"" << f.points(geometry::door_clear_zone(scene))
     << "\" fill=\"#ffe9c7\" stroke=\"#e0a040\" stroke-dasharray=\"5,4\"/>\n";
   const Vec2 n = geometry::door_inward_normal(scene);
@@ -311,7 +351,10 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
     << "\" stroke=\"#f7f7f2\" stroke-width=\"6\"/>\n";
   s << "<text x=\"" << num(f.x(c.x + 0.25 * n.x)) << "\" y=\"" << num(f.y(c.y + 0.25 * n.y))
     << "\" font-size=\"11\" fill=\"#a06010\" text-anchor=\"middle\">door</text>\n";
-  // Objects with a mark on their front (local +x).
+}
+
+//! Objects, fixed ones grey, each with a mark on its front (local +x) and its id.
+void objects_layer(std::ostringstream& s, const Frame& f, const geometry::Scene& scene) {
   for (const auto& o : scene.objects) {
     s << "<polygon points=\"" << f.points(geometry::world_footprint(o)) << "\" fill=\""
       << (o.fixed ? "#d8d8d8" : "#cfe0f5") << "\" stroke=\"#345\" stroke-width=\"1.5\"/>\n";
@@ -325,35 +368,43 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
     s << "<text x=\"" << num(f.x(o.pose.x)) << "\" y=\"" << num(f.y(o.pose.y) + 4)
       << "\" font-size=\"12\" text-anchor=\"middle\">" << escape(o.id) << "</text>\n";
   }
-  // Tours: the others faintly first, then the most likely one boldly.
-  for (std::size_t pass = 0; pass < 2; ++pass) {
-    for (std::size_t k = 0; k < result.tours.size(); ++k) {
-      const bool bold = k == 0;
-      if (bold != (pass == 1)) continue;
-      for (const auto& leg : result.tours[k].legs) {
-        s << "<polyline fill=\"none\" points=\"";
-        bool first = true;
-        for (const auto& w : leg.waypoints) {
-          s << (first ? "" : " ") << f.pt(w.position());
-          first = false;
-        }
-        s << "\" stroke=\"" << (bold ? "#d62728" : "#5070a0") << "\" stroke-width=\""
-          << (bold ? "3" : "1") << "\" stroke-opacity=\"" << (bold ? "0.95" : "0.35") << "\"/>\n";
-      }
+}
+
+//! One polyline per leg of a tour, bold (the most likely tour) or faint.
+void tour_polylines(std::ostringstream& s, const Frame& f, const planning::Tour& tour, bool bold) {
+  for (const auto& leg : tour.legs) {
+    s << "<polyline fill=\"none\" points=\"";
+    bool first = true;
+    for (const auto& w : leg.waypoints) {
+      s << (first ? "" : " ") << f.pt(w.position());
+      first = false;
     }
+    s << "\" stroke=\"" << (bold ? "#d62728" : "#5070a0") << "\" stroke-width=\""
+      << (bold ? "3" : "1") << "\" stroke-opacity=\"" << (bold ? "0.95" : "0.35") << "\"/>\n";
   }
-  // The chair at its start pose.
-  {
-    const auto start = geometry::door_start_pose(scene);
-    const double l = scene.wheelchair.length / 2, w = scene.wheelchair.width / 2;
-    const geometry::Polygon chair{
-        geometry::to_world(start, {-l, -w}), geometry::to_world(start, {l, -w}),
-        geometry::to_world(start, {l, w}), geometry::to_world(start, {-l, w})};
-    s << "<polygon points=\"" << f.points(chair)
-      << "\" fill=\"none\" stroke=\"#2a7\" stroke-width=\"1.5\" stroke-dasharray=\"3,2\"/>\n";
-  }
-  // Scale bar: 1 m.
-  const double by = height - 40.0;
+}
+
+//! Tours: the others faintly first, then the most likely one (tours[0]) boldly.
+void tours_layer(std::ostringstream& s, const Frame& f, const std::vector<planning::Tour>& tours) {
+  for (std::size_t k = 1; k < tours.size(); ++k) tour_polylines(s, f, tours[k], false);
+  if (!tours.empty()) tour_polylines(s, f, tours[0], true);
+}
+
+//! The chair's outline at its start pose, dashed.
+void start_chair_layer(std::ostringstream& s, const Frame& f, const geometry::Scene& scene) {
+  const auto start = geometry::door_start_pose(scene);
+  const double l = scene.wheelchair.length / 2, w = scene.wheelchair.width / 2;
+  const geometry::Polygon chair{
+      geometry::to_world(start, {-l, -w}), geometry::to_world(start, {l, -w}),
+      geometry::to_world(start, {l, w}), geometry::to_world(start, {-l, w})};
+  s << "<polygon points=\"" << f.points(chair)
+    << "\" fill=\"none\" stroke=\"#2a7\" stroke-width=\"1.5\" stroke-dasharray=\"3,2\"/>\n";
+}
+
+//! Below the room: a 1 m scale bar, the final cost and tours found, and the
+//! most likely sequence with its likelihood.
+void legend(std::ostringstream& s, const Canvas& canvas, const DesignResult& result) {
+  const double scale = canvas.frame.scale, by = canvas.height - 40.0;
   s << "<line x1=\"20\" y1=\"" << num(by) << "\" x2=\"" << num(20 + scale) << "\" y2=\"" << num(by)
     << "\" stroke=\"black\" stroke-width=\"3\"/>\n";
   s << "<text x=\"" << num(20 + scale + 8) << "\" y=\"" << num(by + 4)
@@ -362,19 +413,40 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
   s << "<text x=\"" << num(20 + scale + 50) << "\" y=\"" << num(by + 4) << "\" font-size=\"12\">"
     << "cost " << num(result.final.total()) << ", tours found " << found << "/" << total
     << "</text>\n";
-  if (!result.sequences.empty()) {
-    std::string seq;
-    for (const auto& id : result.sequences[0].nodes) {
-      if (!seq.empty()) seq += " \u2192 ";
-      seq += id;
-    }
-    const bool shown = !result.tours.empty() && result.tours[0].found;
-    char lik[32];
-    std::snprintf(lik, sizeof lik, "%.3f", result.sequences[0].likelihood);
-    s << "<text x=\"20\" y=\"" << num(by + 20) << "\" font-size=\"11\" fill=\""
-      << (shown ? "#d62728" : "#777") << "\">most likely tour" << (shown ? " (bold)" : "") << ": "
-      << escape(seq) << ", L = " << lik << (shown ? "" : " \u2014 not found") << "</text>\n";
+  if (result.sequences.empty()) return;
+  std::string seq;
+  for (const auto& id : result.sequences[0].nodes) {
+    if (!seq.empty()) seq += " \u2192 ";
+    seq += id;
   }
+  const bool shown = !result.tours.empty() && result.tours[0].found;
+  char lik[32];
+  std::snprintf(lik, sizeof lik, "%.3f", result.sequences[0].likelihood);
+  s << "<text x=\"20\" y=\"" << num(by + 20) << "\" font-size=\"11\" fill=\""
+    << (shown ? "#d62728" : "#777") << "\">most likely tour" << (shown ? " (bold)" : "") << ": "
+    << escape(seq) << ", L = " << lik << (shown ? "" : " \u2014 not found") << "</text>\n";
+}
+
+}  // namespace
+
+std::string report_document(const DesignResult& result, const RunInfo& info) {
+  json r = run_report_json(result, info);
+  if (result.proposed) r["reuse"] = reuse_json(result);
+  return r.dump(1) + "\n";
+}
+
+std::string design_svg(const DesignResult& result, const std::string& title) {
+  const auto& scene = result.layout;
+  const Canvas canvas = room_canvas(scene);
+  const Frame& f = canvas.frame;
+  std::ostringstream s;
+  svg_open(s, canvas, title);
+  room_layer(s, f, scene);
+  door_layer(s, f, scene);
+  objects_layer(s, f, scene);
+  tours_layer(s, f, result.tours);
+  start_chair_layer(s, f, scene);
+  legend(s, canvas, result);
   s << "</svg>\n";
   return s.str();
 }

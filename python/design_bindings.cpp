@@ -114,9 +114,8 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
   return out;
 }
 
-}  // namespace
-
-void bind_design(py::module_& m) {
+//! hrspace.Design: the result of design() and its files.
+void bind_design_result(py::module_& m) {
   py::class_<PyDesign>(m, "Design",
                        "The result of design(): the best layout, its tours and the report.")
       .def_property_readonly(
@@ -168,7 +167,12 @@ void bind_design(py::module_& m) {
                std::to_string(d.result.final.total()) +
                (d.result.stopped ? ", stopped)" : ")");
       });
+}
 
+}  // namespace
+
+void bind_design(py::module_& m) {
+  bind_design_result(m);
   m.def("design", &run_design, py::arg("scene"), py::kw_only(), py::arg("seed") = 1,
         py::arg("iterations") = 700, py::arg("planner") = "baseline",
         py::arg("reuse") = py::none(), py::arg("threads") = 0, py::arg("progress") = py::none(),

@@ -104,75 +104,91 @@ rs::Segment to_segment(const py::handle& item) {
   return {static_cast<rs::Steer>(steer[0]), gear, length};
 }
 
-}  // namespace
+//! A C-space of the scene as it is now (validated first), built without the GIL.
+PyCSpace make_cspace(const PyScene& scene, int slices) {
+  scene.validate();
+  if (slices < 4 || slices > 100000)
+    throw InputError("--slices: " + std::to_string(slices) + " is outside [4, 100000]");
+  PyCSpace c;
+  for (const auto& o : scene.scene.objects) c.ids.push_back(o.id);
+  geometry::CSpaceOptions options;
+  options.slices = slices;
+  py::gil_scoped_release release;
+  c.cspace = std::make_unique<geometry::CSpace>(scene.scene, options);
+  return c;
+}
 
-void bind_geometry(py::module_& m) {
-  py::class_<PyCSpace>(m, "CSpace",
-                       "The wheelchair's exact, conservative configuration space in a scene's "
-                       "layout: 'free' answers are certified (docs/geometry.md).")
-      .def(py::init([](const PyScene& scene, int slices) {
-             scene.validate();
-             if (slices < 4 || slices > 100000)
-               throw InputError("--slices: " + std::to_string(slices) +
-                                " is outside [4, 100000]");
-             PyCSpace c;
-             for (const auto& o : scene.scene.objects) c.ids.push_back(o.id);
-             geometry::CSpaceOptions options;
-             options.slices = slices;
-             py::gil_scoped_release release;
-             c.cspace = std::make_unique<geometry::CSpace>(scene.scene, options);
-             return c;
-           }),
-           py::arg("scene"), py::arg("slices") = 72,
-           "Builds the C-space of the scene's room, chair and current object poses, with "
-           "`slices` orientation slices (as hrspace collide --slices).")
-      .def(
-          "is_free",
-          [](const PyCSpace& c, const PoseArray& poses) -> py::object {
-            bool single = false;
-            const py::ssize_t n = check_poses(poses, single);
-            py::array_t<bool> out(n);
-            bool* o = out.mutable_data();
-            const double* d = poses.data();
-            {
-              py::gil_scoped_release release;
-              const std::shared_lock lock(*c.mutex);
-              const geometry::CSpace& cs = *c.cspace;
-              for (py::ssize_t i = 0; i < n; ++i)
-                o[i] = cs.is_free({d[3 * i], d[3 * i + 1], d[3 * i + 2]});
-            }
-            if (single) return py::bool_(o[0]);
-            return out;
-          },
-          py::arg("poses"),
-          "For poses of shape (N, 3) (x, y, theta per row), a bool array of shape (N,): True "
-          "only when the chair there is certainly inside the room and clear of all furniture "
-          "(hrspace collide's `free`). A single pose of shape (3,) gives one bool.")
-      .def(
-          "clearance",
-          [](const PyCSpace& c, const PoseArray& poses) {
-            bool single = false;
-            const py::ssize_t n = check_poses(poses, single);
-            py::array_t<double> out({n, py::ssize_t{2}});
-            double* o = out.mutable_data();
-            const double* d = poses.data();
-            {
-              py::gil_scoped_release release;
-              const std::shared_lock lock(*c.mutex);
-              const geometry::CSpace& cs = *c.cspace;
-              for (py::ssize_t i = 0; i < n; ++i) {
-                const geometry::Clearance cl = cs.clearance({d[3 * i], d[3 * i + 1], d[3 * i + 2]});
-                o[2 * i] = cl.left;
-                o[2 * i + 1] = cl.right;
-              }
-            }
-            if (single) out.resize({py::ssize_t{2}});
-            return out;
-          },
-          py::arg("poses"),
-          "For poses of shape (N, 3), an array of shape (N, 2): the distance (metres) to the "
-          "nearest wall or furniture outline on the left and on the right of each pose's "
-          "heading (hrspace collide's clear_left, clear_right). Shape (3,) gives shape (2,).")
+//! is_free(): a bool per pose (one bool for a single pose).
+py::object cspace_is_free(const PyCSpace& c, const PoseArray& poses) {
+  bool single = false;
+  const py::ssize_t n = check_poses(poses, single);
+  py::array_t<bool> out(n);
+  bool* o = out.mutable_data();
+  const double* d = poses.data();
+  {
+    py::gil_scoped_release release;
+    const std::shared_lock lock(*c.mutex);
+    const geometry::CSpace& cs = *c.cspace;
+    for (py::ssize_t i = 0; i < n; ++i)
+      o[i] = cs.is_free({d[3 * i], d[3 * i + 1], d[3 * i + 2]});
+  }
+  if (single) return py::bool_(o[0]);
+  return out;
+}
+
+//! clearance(): (left, right) per pose (one pair for a single pose).
+py::array_t<double> cspace_clearance(const PyCSpace& c, const PoseArray& poses) {
+  bool single = false;
+  const py::ssize_t n = check_poses(poses, single);
+  py::array_t<double> out({n, py::ssize_t{2}});
+  double* o = out.mutable_data();
+  const double* d = poses.data();
+  {
+    py::gil_scoped_release release;
+    const std::shared_lock lock(*c.mutex);
+    const geometry::CSpace& cs = *c.cspace;
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const geometry::Clearance cl = cs.clearance({d[3 * i], d[3 * i + 1], d[3 * i + 2]});
+      o[2 * i] = cl.left;
+      o[2 * i + 1] = cl.right;
+    }
+  }
+  if (single) out.resize({py::ssize_t{2}});
+  return out;
+}
+
+//! rs.sample(): poses along a path at most `step` apart, shape (N, 3).
+py::array_t<double> sample_path(const PyPath& p, double step) {
+  if (!(step > 0.0) || !std::isfinite(step))
+    throw InputError("step: must be a finite number > 0, got " + number_text(step));
+  std::vector<geometry::Pose2> poses;
+  {
+    py::gil_scoped_release release;
+    poses = rs::sample(p.start, p.path, step);
+  }
+  py::array_t<double> out({static_cast<py::ssize_t>(poses.size()), py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    a(i, 0) = poses[i].x, a(i, 1) = poses[i].y, a(i, 2) = poses[i].theta;
+  return out;
+}
+
+//! CSpace: which poses are free and how much room they have.
+void add_cspace_queries(py::class_<PyCSpace>& cspace) {
+  cspace
+      .def("is_free", &cspace_is_free, py::arg("poses"),
+           "For poses of shape (N, 3) (x, y, theta per row), a bool array of shape (N,): True "
+           "only when the chair there is certainly inside the room and clear of all furniture "
+           "(hrspace collide's `free`). A single pose of shape (3,) gives one bool.")
+      .def("clearance", &cspace_clearance, py::arg("poses"),
+           "For poses of shape (N, 3), an array of shape (N, 2): the distance (metres) to the "
+           "nearest wall or furniture outline on the left and on the right of each pose's "
+           "heading (hrspace collide's clear_left, clear_right). Shape (3,) gives shape (2,).");
+}
+
+//! CSpace: moving one object and reading its pose.
+void add_cspace_objects(py::class_<PyCSpace>& cspace) {
+  cspace
       .def(
           "move_object",
           [](PyCSpace& c, const py::object& key, const py::object& pose) {
@@ -197,20 +213,11 @@ void bind_geometry(py::module_& m) {
             }
             return pose_tuple(p);
           },
-          py::arg("object"), "The pose (x, y, theta) of one object (by id or index).")
-      .def_property_readonly(
-          "slices", [](const PyCSpace& c) { return c.cspace->slices(); },
-          "Number of orientation slices.")
-      .def_property_readonly(
-          "piece_count", [](const PyCSpace& c) { return c.cspace->piece_count(); },
-          "Convex C-obstacle pieces over all slices.")
-      .def("__repr__", [](const PyCSpace& c) {
-        return "CSpace(" + std::to_string(c.ids.size()) + " objects, " +
-               std::to_string(c.cspace->slices()) + " slices)";
-      });
+          py::arg("object"), "The pose (x, y, theta) of one object (by id or index).");
 }
 
-void bind_rs(py::module_& m) {
+//! hrspace.rs.Path: a Reeds-Shepp path and what it measures.
+void bind_path(py::module_& m) {
   py::class_<PyPath>(m, "Path",
                      "A Reeds-Shepp path: segments driven in order from `start` with turning "
                      "radius `radius`.")
@@ -259,7 +266,39 @@ void bind_rs(py::module_& m) {
       .def("__repr__", [](const PyPath& p) {
         return "Path(word='" + p.path.word() + "', length=" + number_text(p.path.length()) + ")";
       });
+}
 
+//! CSpace: its slices and pieces, and its repr.
+void add_cspace_info(py::class_<PyCSpace>& cspace) {
+  cspace
+      .def_property_readonly(
+          "slices", [](const PyCSpace& c) { return c.cspace->slices(); },
+          "Number of orientation slices.")
+      .def_property_readonly(
+          "piece_count", [](const PyCSpace& c) { return c.cspace->piece_count(); },
+          "Convex C-obstacle pieces over all slices.")
+      .def("__repr__", [](const PyCSpace& c) {
+        return "CSpace(" + std::to_string(c.ids.size()) + " objects, " +
+               std::to_string(c.cspace->slices()) + " slices)";
+      });
+}
+
+}  // namespace
+
+void bind_geometry(py::module_& m) {
+  py::class_<PyCSpace> cspace(m, "CSpace",
+                              "The wheelchair's exact, conservative configuration space in a "
+                              "scene's layout: 'free' answers are certified (docs/geometry.md).");
+  cspace.def(py::init(&make_cspace), py::arg("scene"), py::arg("slices") = 72,
+             "Builds the C-space of the scene's room, chair and current object poses, with "
+             "`slices` orientation slices (as hrspace collide --slices).");
+  add_cspace_queries(cspace);
+  add_cspace_objects(cspace);
+  add_cspace_info(cspace);
+}
+
+void bind_rs(py::module_& m) {
+  bind_path(m);
   m.def(
       "shortest",
       [](const py::object& a, const py::object& b, double radius) {
@@ -271,25 +310,9 @@ void bind_rs(py::module_& m) {
       "The exact shortest Reeds-Shepp path from pose a to pose b (x, y, theta) with turning "
       "radius `radius` (metres, 0.001 to 2000): a Path with length, word and segments, as "
       "hrspace rs computes them.");
-  m.def(
-      "sample",
-      [](const PyPath& p, double step) {
-        if (!(step > 0.0) || !std::isfinite(step))
-          throw InputError("step: must be a finite number > 0, got " + number_text(step));
-        std::vector<geometry::Pose2> poses;
-        {
-          py::gil_scoped_release release;
-          poses = rs::sample(p.start, p.path, step);
-        }
-        py::array_t<double> out({static_cast<py::ssize_t>(poses.size()), py::ssize_t{3}});
-        auto a = out.mutable_unchecked<2>();
-        for (std::size_t i = 0; i < poses.size(); ++i)
-          a(i, 0) = poses[i].x, a(i, 1) = poses[i].y, a(i, 2) = poses[i].theta;
-        return out;
-      },
-      py::arg("path"), py::arg("step"),
-      "Poses along `path` from its start to its end, at most `step` metres apart, both ends "
-      "included: array of shape (N, 3).");
+  m.def("sample", &sample_path, py::arg("path"), py::arg("step"),
+        "Poses along `path` from its start to its end, at most `step` metres apart, both ends "
+        "included: array of shape (N, 3).");
 }
 
 }  // namespace hrs::python

@@ -90,9 +90,51 @@ py::dict weights_dict(const geometry::Weights& w) {
   return d;
 }
 
-}  // namespace
+//! Every object's pose as an array of shape (N, 3).
+py::array_t<double> poses_array(const PyScene& s) {
+  const auto n = static_cast<py::ssize_t>(s.scene.objects.size());
+  py::array_t<double> out({n, py::ssize_t{3}});
+  auto a = out.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < n; ++i) {
+    const auto& p = s.scene.objects[i].pose;
+    a(i, 0) = p.x, a(i, 1) = p.y, a(i, 2) = p.theta;
+  }
+  return out;
+}
 
-void bind_scene(py::module_& m) {
+//! Sets every object's pose from an array of shape (N, 3), all checked first.
+void set_poses(PyScene& s,
+               const py::array_t<double, py::array::c_style | py::array::forcecast>& a) {
+  if (a.ndim() != 2 || a.shape(1) != 3 ||
+      a.shape(0) != static_cast<py::ssize_t>(s.scene.objects.size()))
+    throw InputError("poses: expected an array of shape (" +
+                     std::to_string(s.scene.objects.size()) + ", 3)");
+  std::vector<geometry::Pose2> poses;
+  const auto r = a.unchecked<2>();
+  for (py::ssize_t i = 0; i < a.shape(0); ++i)
+    poses.push_back(
+        to_pose(py::make_tuple(r(i, 0), r(i, 1), r(i, 2)), "poses[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < poses.size(); ++i) s.scene.objects[i].pose = poses[i];
+}
+
+//! Sets the path and/or interior weights from {'path': (3), 'interior': (2)}.
+void set_weights(PyScene& s, const py::dict& d) {
+  geometry::Weights w = s.scene.weights;
+  if (d.contains("path")) {
+    const auto v = d["path"].cast<std::vector<double>>();
+    if (v.size() != 3) throw InputError("weights['path']: expected 3 numbers");
+    w.path = {v[0], v[1], v[2]};
+  }
+  if (d.contains("interior")) {
+    const auto v = d["interior"].cast<std::vector<double>>();
+    if (v.size() != 2) throw InputError("weights['interior']: expected 2 numbers");
+    w.interior = {v[0], v[1]};
+  }
+  s.scene.weights = w;
+}
+
+//! hrspace.Object: a view of one object of a Scene.
+void bind_object(py::module_& m) {
   py::class_<ObjectRef>(m, "Object",
                         "One piece of furniture of a Scene (a view: edits change the scene).")
       .def_property_readonly(
@@ -119,10 +161,11 @@ void bind_scene(py::module_& m) {
           << ")" << (o.get().fixed ? ", fixed" : "") << ")";
         return s.str();
       });
+}
 
-  py::class_<PyScene>(m, "Scene",
-                      "A scene (hrspace-scene/1): room, door, wheelchair, furniture, "
-                      "interior-design preferences and the activity graph.")
+//! Scene: reading, writing, validating, copying and comparing.
+void add_scene_io(py::class_<PyScene>& scene) {
+  scene
       .def(py::init(&from_source), py::arg("source"),
            "Reads a scene from a file path (str or os.PathLike) or from JSON text (a str "
            "starting with '{'). Raises ValueError with the command line's message when the "
@@ -141,7 +184,12 @@ void bind_scene(py::module_& m) {
       .def("__deepcopy__", [](const PyScene& s, py::dict) { return s; }, py::arg("memo"),
            "An independent copy.")
       .def("__eq__", [](const PyScene& a, const PyScene& b) { return a.scene == b.scene; },
-           py::is_operator(), "Equal data (labels are not compared).")
+           py::is_operator(), "Equal data (labels are not compared).");
+}
+
+//! Scene: its name and label, and its objects (as views, by id, their poses).
+void add_scene_objects(py::class_<PyScene>& scene) {
+  scene
       .def_property(
           "name", [](const PyScene& s) { return s.scene.name; },
           [](PyScene& s, const std::string& n) { s.scene.name = n; }, "The scene's name; settable.")
@@ -176,30 +224,13 @@ void bind_scene(py::module_& m) {
           },
           "The objects' ids, in file order.")
       .def_property(
-          "poses",
-          [](const PyScene& s) {
-            const auto n = static_cast<py::ssize_t>(s.scene.objects.size());
-            py::array_t<double> out({n, py::ssize_t{3}});
-            auto a = out.mutable_unchecked<2>();
-            for (py::ssize_t i = 0; i < n; ++i) {
-              const auto& p = s.scene.objects[i].pose;
-              a(i, 0) = p.x, a(i, 1) = p.y, a(i, 2) = p.theta;
-            }
-            return out;
-          },
-          [](PyScene& s, const py::array_t<double, py::array::c_style | py::array::forcecast>& a) {
-            if (a.ndim() != 2 || a.shape(1) != 3 ||
-                a.shape(0) != static_cast<py::ssize_t>(s.scene.objects.size()))
-              throw InputError("poses: expected an array of shape (" +
-                               std::to_string(s.scene.objects.size()) + ", 3)");
-            std::vector<geometry::Pose2> poses;
-            const auto r = a.unchecked<2>();
-            for (py::ssize_t i = 0; i < a.shape(0); ++i)
-              poses.push_back(to_pose(py::make_tuple(r(i, 0), r(i, 1), r(i, 2)),
-                                      "poses[" + std::to_string(i) + "]"));
-            for (std::size_t i = 0; i < poses.size(); ++i) s.scene.objects[i].pose = poses[i];
-          },
-          "Every object's (x, y, theta): array of shape (N, 3) in object order; settable.")
+          "poses", &poses_array, &set_poses,
+          "Every object's (x, y, theta): array of shape (N, 3) in object order; settable.");
+}
+
+//! Scene: the room, the door, the start pose and the wheelchair.
+void add_scene_room(py::class_<PyScene>& scene) {
+  scene
       .def_property_readonly(
           "room", [](const PyScene& s) { return polygon_array(s.scene.room.polygon); },
           "The room's inner wall outline, counter-clockwise: array of shape (V, 2).")
@@ -227,23 +258,15 @@ void bind_scene(py::module_& m) {
             d["turning_radius"] = s.scene.wheelchair.turning_radius;
             return d;
           },
-          "The wheelchair: length, width, turning_radius (metres).")
+          "The wheelchair: length, width, turning_radius (metres).");
+}
+
+//! Scene: the cost weights and the activity (AO) graph.
+void add_scene_preferences(py::class_<PyScene>& scene) {
+  scene
       .def_property(
           "weights", [](const PyScene& s) { return weights_dict(s.scene.weights); },
-          [](PyScene& s, const py::dict& d) {
-            geometry::Weights w = s.scene.weights;
-            if (d.contains("path")) {
-              const auto v = d["path"].cast<std::vector<double>>();
-              if (v.size() != 3) throw InputError("weights['path']: expected 3 numbers");
-              w.path = {v[0], v[1], v[2]};
-            }
-            if (d.contains("interior")) {
-              const auto v = d["interior"].cast<std::vector<double>>();
-              if (v.size() != 2) throw InputError("weights['interior']: expected 2 numbers");
-              w.interior = {v[0], v[1]};
-            }
-            s.scene.weights = w;
-          },
+          &set_weights,
           "Cost weights: {'path': (length, rotation, clearance), 'interior': (distance, "
           "angle)}; settable (like the command's --weights; validate() checks the values).")
       .def_property_readonly(
@@ -256,11 +279,24 @@ void bind_scene(py::module_& m) {
             return d;
           },
           "The activity (AO) graph: transitions {from: {to: probability}}, sequences (M), "
-          "visits.")
-      .def("__repr__", [](const PyScene& s) {
-        return "Scene('" + s.scene.name + "', " + std::to_string(s.scene.objects.size()) +
-               " objects, from " + s.label + ")";
-      });
+          "visits.");
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  bind_object(m);
+  py::class_<PyScene> scene(m, "Scene",
+                            "A scene (hrspace-scene/1): room, door, wheelchair, furniture, "
+                            "interior-design preferences and the activity graph.");
+  add_scene_io(scene);
+  add_scene_objects(scene);
+  add_scene_room(scene);
+  add_scene_preferences(scene);
+  scene.def("__repr__", [](const PyScene& s) {
+    return "Scene('" + s.scene.name + "', " + std::to_string(s.scene.objects.size()) +
+           " objects, from " + s.label + ")";
+  });
 }
 
 }  // namespace hrs::python
