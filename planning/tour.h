@@ -37,87 +37,10 @@
 #include "planning/leg_provider.h"
 #include "planning/metrics.h"
 #include "planning/rrt.h"
+#include "planning/tour_types.h"
 #include "rs/reeds_shepp.h"
 
 namespace hrs::planning {
-
-//! Id of the start node in sequences (the door).
-inline constexpr std::string_view kDoorId = geometry::kStartNodeId;
-
-struct TourOptions {
-  PlannerOptions planner;  //!< the leg planner (baseline RRT, §III-B)
-  GoalOptions goals;       //!< goal poses around objects
-  //! From one start pose, only the this many nearest (by RS length) goal poses
-  //! of the next object are planned to; the rest are never tried.
-  int max_candidates = 6;
-  //! Cap: leg plans (RRT queries) per tour; past it the tour is not found.
-  int max_leg_plans = 40;
-  //! Waypoint spacing of the returned legs (metres).
-  double waypoint_step = kWaypointStep;
-};
-
-class LegMeasures;
-class ReachGate;
-
-struct TourHooks {
-  PlannerHooks planner;  //!< sampler / steering of the leg planner
-  //! Non-null: legs come from here (the proposed planner); null: every leg
-  //! is planned by the tour's own RRT (the baseline).
-  LegProvider* provider = nullptr;
-  //! Non-null: found legs are measured through it (same results, work kept
-  //! across tours and layouts: planning/leg_measures.h); null: afresh.
-  LegMeasures* measures = nullptr;
-  //! Non-null: a leg the gate proves impossible is not planned; it counts
-  //! as a planned leg that failed (legs_planned, legs_failed, max_leg_plans),
-  //! exactly as the RRT query it replaces, so tours are the same with and
-  //! without the gate. Used for the baseline's own legs; the proposed
-  //! planner asks its gate inside the provider.
-  const ReachGate* gate = nullptr;
-  //! Non-null and set: the tour stops before its next leg and is not found
-  //! (the caller no longer needs it; see optimize/design.cpp).
-  const std::atomic<bool>* cancel = nullptr;
-  //! Non-null and set while the constructor generates the goal poses: the
-  //! constructor throws hrs::Interrupted (the user asked to stop before the
-  //! first plan; see optimize/design.cpp).
-  const std::atomic<bool>* stop = nullptr;
-  //! The caller's index of this tour, passed to the provider.
-  int tour = 0;
-};
-
-struct Leg {
-  std::string from_id, to_id;  //!< object ids ("door" for the start)
-  LegKey key;                  //!< object indices and goal slots
-  Pose2 from, to;
-  rs::Path path;                 //!< driven from `from`, scene radius
-  std::vector<Pose2> waypoints;  //!< every waypoint_step metres, ends included
-  PathMetrics metrics;
-  LegSource source = LegSource::kPlanned;
-  LegStats stats;  //!< of the RRT query that found it (zeros when reused)
-};
-
-struct TourStats {
-  int legs_planned = 0;   //!< RRT queries run
-  int legs_failed = 0;    //!< of which found nothing
-  int legs_reused = 0;    //!< paths taken from the provider's database
-  int legs_repaired = 0;  //!< stored paths repaired by the provider (also in legs_planned)
-  int legs_rejected = 0;  //!< stored paths invalid in the current layout
-  int legs_refused = 0;   //!< legs the gate proved impossible (also in legs_failed)
-  int backtracks = 0;     //!< returns to an earlier leg
-  int depth = 0;          //!< most legs joined at once (= sequence size − 1 when found)
-  bool capped = false;    //!< max_leg_plans was reached
-  bool cancelled = false; //!< stopped through TourHooks::cancel
-  std::uint64_t rrt_iterations = 0;
-  std::uint64_t collision_checks = 0;
-  double time_ms = 0.0;
-};
-
-struct Tour {
-  std::vector<std::string> sequence;  //!< starts with "door"
-  bool found = false;
-  std::vector<Leg> legs;  //!< sequence.size() − 1 joined legs when found, else empty
-  PathMetrics metrics;    //!< of the whole tour (zeros when not found)
-  TourStats stats;
-};
 
 class TourPlanner {
  public:
