@@ -266,13 +266,14 @@ class DesignRun {
     result_.unblock.walled_after = result_.unblock.walled_before;
     if (walled.empty()) return false;
     std::mt19937_64 rng(splitmix64(options_.seed ^ 0x756e'626c'6f63'6bULL));
+    const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
     bool changed = false;
     for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
       if (stop_ && stop_->load()) break;
       const std::vector<int> focus = focus_for(walled, true);
       if (focus.empty()) break;
       const int o = focus[uniform_index(rng, focus.size())];
-      const std::optional<Pose2> to = unblock_move(o, rng);
+      const std::optional<Pose2> to = unblock_move(o, box, rng);
       ++result_.unblock.proposals;
       if (!to) continue;
       const Pose2 from = work_.objects[o].pose;
@@ -319,12 +320,11 @@ class DesignRun {
   }
 
   //! One unblocking proposal for object `o`: a jump anywhere in the room's
-  //! box with a quarter turn (1/2), a step of up to 1 m per axis (1/4) or a
+  //! `box` with a quarter turn (1/2), a step of up to 1 m per axis (1/4) or a
   //! quarter turn (1/4), redrawn up to 50 times until valid; nullopt when
   //! no draw was.
-  std::optional<Pose2> unblock_move(int o, std::mt19937_64& rng) {
+  std::optional<Pose2> unblock_move(int o, const geometry::Box& box, std::mt19937_64& rng) {
     constexpr double kQuarter = std::numbers::pi / 2;
-    const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
     const Pose2 from = work_.objects[o].pose;
     const double kind = uniform01(rng);
     for (int attempt = 0; attempt < 50; ++attempt) {
