@@ -131,12 +131,17 @@ std::array<double, 3> CostModel::tour_costs(int k, const planning::Tour& tour,
   const std::size_t legs = nodes.size() - 1;
   if (!tour.found) {
     // Legs the planner could join (stats.depth) are charged half their
-    // share, the others 1 + b/2 (see the header).
+    // share, the others 1 + b/2; each share at the largest length, rotation
+    // and clearance deficit a found leg of its length can have (see the header).
     const std::size_t joined = std::min<std::size_t>(std::max(tour.stats.depth, 0), legs);
     for (std::size_t i = 1; i < nodes.size(); ++i) {
       const double b = i - 1 < blockage.size() ? blockage[i - 1] : 0.0;
       const double share = i <= joined ? 0.5 : 1.0 + 0.5 * b;
-      c[0] += share * object_weight(nodes[i]) * unfound_length() / static_cast<double>(legs);
+      const double weight = share * object_weight(nodes[i]);
+      const double length = unfound_length() / static_cast<double>(legs);
+      c[0] += weight * length;
+      c[1] += weight * length / scene_.wheelchair.turning_radius;
+      c[2] += weight * scene_.weights.clearance_width;
     }
     return c;
   }
@@ -156,7 +161,6 @@ double CostModel::tour_total(int k, const planning::Tour& tour,
   const auto c = tour_costs(k, tour, blockage);
   const auto& wp = scene_.weights.path;
   const double l = seq_weight_[k];
-  if (!tour.found) return wp[0] * l * c[0];
   return wp[0] * l * c[0] + wp[1] * l * c[1] + wp[2] * l * c[2];
 }
 
@@ -196,7 +200,7 @@ CostTerms CostModel::evaluate(const InteriorCosts& interior,
       t.path_rotation += wp[1] * l * c[1];
       t.path_clearance += wp[2] * l * c[2];
     } else {
-      t.unfound_penalty += wp[0] * l * c[0];
+      t.unfound_penalty += wp[0] * l * c[0] + wp[1] * l * c[1] + wp[2] * l * c[2];
     }
   }
   return t;

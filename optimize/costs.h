@@ -1,15 +1,16 @@
 #pragma once
 // The cost of a layout (paper §III-D, docs/design-notes.md "Costs"):
 //   C_total = Σ_s L̂(s) · Σ_legs α̂_end · (w_l·length + w_r·rotation + w_c·clearance)
-//           + w_l · (penalty of unfound tours)
+//           + Σ_s unfound L̂(s) · (penalty: w_l·length + w_r·length/r + w_c·w_ref per leg)
 //           + w_I,d · C_I^d + w_I,r · C_I^r.
 // Every term is reported separately (CostTerms).
 //
 // Decisions where the paper is ambiguous (documented in docs/optimize.md):
 // - Clearance is bounded and decreases as corridors widen: the per-leg mean
-//   over waypoints of max(0, w_ref − (left + right)), w_ref = planning::kReferenceWidth
-//   = 0.915 m (ADA), measured by planning::measure as clearance_deficit;
-//   the paper's mean width would reward narrow corridors under minimization.
+//   over waypoints of max(0, w_ref − (left + right)), w_ref the scene's
+//   weights.clearance_width (default 1.525 m, the ADA turning diameter),
+//   measured by planning::measure as clearance_deficit; the paper's mean
+//   width would reward narrow corridors under minimization.
 // - α_i (sequences.h) weights the legs that end at object i.
 // - Normalization: the paper's raw L(s) (≈ 0.01–0.1) and α_i make the path
 //   term vanish next to the interior term, so we use L̂(s) = L(s) / Σ_M L and
@@ -18,17 +19,24 @@
 //   tour cost over the M sequences, with frequently visited objects weighted up.
 // - A tour that cannot be found costs as if its length were
 //   kUnfoundPerimeterFactor × the room's perimeter P, spread evenly over its
-//   legs and weighted by α̂ like a found tour; its rotation and clearance
-//   count 0. So that the annealer can tell "nearly tourable" from "sealed
-//   off", each leg's share is graded: the first Tour::stats.depth legs (those
-//   the planner could join before failing) are charged 1/2 of it; a leg not
-//   joined is charged 3/4 + b/4, where b (planning::ReachGate::blockage) is 0
-//   when the free grid lets the door reach one of the leg's goal poses and
-//   else grows from 1/2 to 1 with the distance from the door's reachable
-//   region to the nearest goal pose (b = 1 when no grade is given). An
-//   unfound tour costs between kUnfoundPerimeterFactor·P/2 and
-//   kUnfoundPerimeterFactor·P; a layout that walls less of the room off
-//   from the door costs less (docs/optimize.md "Blocked layouts").
+//   legs and weighted by α̂ like a found tour, with the most rotation and
+//   clearance deficit a found tour of that length can have: rotation
+//   length / r, r the chair's turning radius (a Reeds–Shepp path turns at
+//   most ds / r along ds), and a deficit of w_ref per leg (the per-leg mean
+//   of max(0, w_ref − width) is at most w_ref). So an unfound tour none of
+//   whose legs was joined costs at least as much as any found tour whose
+//   legs are no longer than the penalty's, whatever the path weights. (Charging its length alone let a
+//   room whose found tours turn a lot value a missing tour at about two
+//   found ones; docs/optimize.md measures the difference.) So that the
+//   annealer can tell "nearly tourable" from "sealed off", each leg's share
+//   is graded: the
+//   first Tour::stats.depth legs (those the planner could join before
+//   failing) are charged 1/2 of it; a leg not joined is charged 1 + b/2,
+//   where b (planning::ReachGate::blockage) is 0 when the free grid lets the
+//   door reach one of the leg's goal poses and else grows from 1/2 to 1 with
+//   the distance from the door's reachable region to the nearest goal pose.
+//   A layout that walls less of the room off from the door costs less
+//   (docs/optimize.md "Blocked layouts").
 // - Interior: pairwise distance (Σ relations weight·(|c_a − c_b| − d)² plus,
 //   per object with a wall distance preference, (footprint-to-nearest-wall
 //   distance − d)²) and pairwise rotation (Σ relations weight·wrap(θ_a − θ_b −
@@ -62,7 +70,7 @@ struct CostTerms {
   double path_length = 0.0;        //!< w_l · Σ L̂ Σ α̂ · length of found tours
   double path_rotation = 0.0;      //!< w_r · Σ L̂ Σ α̂ · rotation
   double path_clearance = 0.0;     //!< w_c · Σ L̂ Σ α̂ · clearance deficit
-  double unfound_penalty = 0.0;    //!< w_l · Σ L̂ · penalty of unfound tours
+  double unfound_penalty = 0.0;    //!< Σ L̂ · penalty of unfound tours (all three path weights)
   double interior_distance = 0.0;  //!< w_I,d · C_I^d
   double interior_rotation = 0.0;  //!< w_I,r · C_I^r
   int tours_found = 0;
@@ -96,9 +104,10 @@ class CostModel {
   //! Unweighted interior costs of object poses (scene order).
   InteriorCosts interior(const std::vector<Pose2>& poses) const;
   //! α̂-weighted [length, rotation, clearance deficit] of one tour of
-  //! sequence k (unweighted by L̂ and w); unfound: [penalty, 0, 0] with the
-  //! penalty graded by stats.depth and `blockage` (b of each leg, in
-  //! sequence order; empty: b = 1), see the header.
+  //! sequence k (unweighted by L̂ and w); unfound: the penalty's length,
+  //! rotation and clearance deficit (see the header), each leg's share
+  //! graded by stats.depth and `blockage` (b of each leg, in sequence
+  //! order; empty: b = 0).
   std::array<double, 3> tour_costs(int k, const planning::Tour& tour,
                                    std::span<const double> blockage = {}) const;
   //! Tour k's share of the total: its path terms weighted by w and L̂.

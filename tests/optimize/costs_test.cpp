@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 
 #include "geometry/cspace.h"
@@ -134,20 +135,53 @@ TEST(Costs, UnfoundTourCostsAFixedMultipleOfThePerimeter) {
   lost.sequence = {"door", "a", "b"};
   const auto t =
       model.evaluate({s.objects[0].pose, s.objects[1].pose}, std::vector<planning::Tour>{lost});
-  // Spread over two legs, α̂ 4/3 and 2/3: the tour is charged 3·16 = 48 m.
-  EXPECT_NEAR(t.unfound_penalty, 2 * kUnfoundPerimeterFactor * 16.0, 1e-12);
+  // Spread over two legs, α̂ 4/3 and 2/3: the tour is charged 3·16 = 48 m,
+  // turning 48 / r (r = 0.7), and a deficit of w_ref = 1.525 m on each leg,
+  // under path weights 2, 1, 1.
+  auto penalty = [](double metres, double alpha_sum) {
+    return 2 * metres + metres / 0.7 + alpha_sum * 1.525;
+  };
+  EXPECT_NEAR(t.unfound_penalty, penalty(kUnfoundPerimeterFactor * 16.0, 2.0), 1e-12);
   EXPECT_EQ(t.path_length + t.path_rotation + t.path_clearance, 0.0);
   EXPECT_EQ(t.tours_found, 0);
   EXPECT_EQ(t.tours_total, 1);
   // The planner joined the first leg (to a) before failing: that leg is
-  // charged half: (½·4/3 + 2/3)·48/2 = 32, times w_l = 2.
+  // charged half: (½·4/3 + 2/3)·48/2 = 32 m.
   lost.stats.depth = 1;
   const auto partial =
       model.evaluate({s.objects[0].pose, s.objects[1].pose}, std::vector<planning::Tour>{lost});
-  EXPECT_NEAR(partial.unfound_penalty, 2 * 32.0, 1e-12);
+  EXPECT_NEAR(partial.unfound_penalty, penalty(32.0, 4.0 / 3), 1e-12);
   lost.stats.depth = 2;  // both legs joined but the tour still failed: half of all
   EXPECT_NEAR(model.evaluate({s.objects[0].pose, s.objects[1].pose}, {lost}).unfound_penalty,
-              2 * 24.0, 1e-12);
+              penalty(24.0, 1.0), 1e-12);
+}
+
+// An unfound tour none of whose legs was joined costs at least as much as
+// any found tour of the same sequence whose legs are each at most the
+// penalty's length per leg (each turning at most length / r, its deficit at
+// most w_ref), whatever the weights, the turning radius and w_ref: 4000
+// random cases.
+TEST(Costs, UnfoundTourCostsAtLeastAnyFoundTourUpToItsLength) {
+  std::mt19937_64 rng(20261123);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int c = 0; c < 4000; ++c) {
+    Scene s = two_box_scene(R"({"path": [1, 1, 1], "interior": [0, 0]})");
+    s.weights.path = {3 * u(rng), 3 * u(rng), 10 * u(rng)};
+    s.weights.clearance_width = 0.7 + 1.5 * u(rng);
+    s.wheelchair.turning_radius = 0.3 + 0.6 * u(rng);
+    const CostModel model(s, scene_sequences(s));
+    const double r = s.wheelchair.turning_radius, per_leg = model.unfound_length() / 2;
+    const std::vector<double> length{per_leg * u(rng), per_leg * u(rng)};
+    std::vector<double> rotation, deficit;
+    for (double l : length) {
+      rotation.push_back(l / r * u(rng));
+      deficit.push_back(s.weights.clearance_width * u(rng));
+    }
+    const auto found = hand_tour({"door", "a", "b"}, length, rotation, deficit);
+    planning::Tour lost;
+    lost.sequence = {"door", "a", "b"};
+    ASSERT_LE(model.tour_total(0, found), model.tour_total(0, lost) * (1 + 1e-12)) << "case " << c;
+  }
 }
 
 // A box in the corner whose only approach side faces the wall: no goal pose
@@ -168,7 +202,9 @@ TEST(Costs, UnreachableTourFromThePlannerGetsThePenalty) {
   const auto tour = planner.plan(model.sequences()[0].nodes);
   ASSERT_FALSE(tour.found);
   const auto t = model.evaluate({s.objects[0].pose}, {tour});
-  EXPECT_NEAR(t.unfound_penalty, kUnfoundPerimeterFactor * 16.0, 1e-9);
+  // One leg to the only object (α̂ = 1), default path weights 1, 1, 1.
+  const double metres = kUnfoundPerimeterFactor * 16.0;
+  EXPECT_NEAR(t.unfound_penalty, metres + metres / 0.7 + 1.525, 1e-9);
   EXPECT_EQ(t.path_length, 0.0);
 }
 
