@@ -1,6 +1,7 @@
 #include "planning/nearest.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -21,6 +22,13 @@ double angle_gap(double a, double b) { return std::abs(geometry::wrap_angle(a - 
 double PoseNearest::distance(const geometry::Pose2& a, const geometry::Pose2& b) const {
   const double dx = a.x - b.x, dy = a.y - b.y;
   return std::sqrt(dx * dx + dy * dy) + weight_ * angle_gap(a.theta, b.theta);
+}
+
+double PoseNearest::ranking_distance(const geometry::Pose2& query,
+                                     const geometry::Pose2& pose) const {
+  const double q[3] = {query.x, query.y, geometry::wrap_angle(query.theta)};
+  const double p[3] = {pose.x, pose.y, geometry::wrap_angle(pose.theta)};
+  return point_distance(q, p);
 }
 
 double PoseNearest::point_distance(const double a[3], const double b[3]) const {
@@ -130,6 +138,37 @@ void PoseNearest::nearest(const geometry::Pose2& query, std::size_t k,
   }
   std::sort_heap(heap.begin(), heap.end());
   for (const Candidate& c : heap) out.push_back(nodes_[c.order].id);
+}
+
+void QueryOrder::reset(const geometry::Pose2& query) {
+  query_ = query;
+  order_.clear();
+  distance_of_id_.clear();
+}
+
+void QueryOrder::insert(const geometry::Pose2& pose, std::int32_t id) {
+  assert(id >= 0);
+  const auto slot = static_cast<std::size_t>(id);
+  if (distance_of_id_.size() <= slot)
+    distance_of_id_.resize(slot + 1, std::numeric_limits<double>::quiet_NaN());
+  assert(std::isnan(distance_of_id_[slot]));
+  const double d = metric_.ranking_distance(query_, pose);
+  distance_of_id_[slot] = d;
+  order_.emplace(d, id);
+}
+
+void QueryOrder::remove(std::int32_t id) {
+  if (id < 0 || static_cast<std::size_t>(id) >= distance_of_id_.size()) return;
+  double& d = distance_of_id_[static_cast<std::size_t>(id)];
+  if (std::isnan(d)) return;
+  order_.erase({d, id});
+  d = std::numeric_limits<double>::quiet_NaN();
+}
+
+void QueryOrder::nearest(std::size_t k, std::vector<std::int32_t>& out) const {
+  out.clear();
+  for (auto it = order_.begin(); it != order_.end() && out.size() < k; ++it)
+    out.push_back(it->second);
 }
 
 }  // namespace hrs::planning

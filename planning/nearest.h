@@ -10,6 +10,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -23,6 +25,9 @@ class PoseNearest {
 
   //! The weighted distance used for ranking.
   double distance(const geometry::Pose2& a, const geometry::Pose2& b) const;
+  //! The distance nearest() ranks `pose` by for `query` (headings wrapped
+  //! first, exactly as stored), bit for bit.
+  double ranking_distance(const geometry::Pose2& query, const geometry::Pose2& pose) const;
 
   //! Adds a pose with the caller's id (ids need not be dense).
   void insert(const geometry::Pose2& pose, std::int32_t id);
@@ -68,6 +73,33 @@ class PoseNearest {
   double weight_;
   std::vector<Node> nodes_;                //!< nodes_[0] is the kd-tree root
   std::vector<std::int32_t> index_of_id_;  //!< node index per non-negative id, or -1
+};
+
+//! The poses nearest to one fixed query (the RRT's goal), kept in order as
+//! poses are inserted and removed, so the k nearest cost O(k) instead of a
+//! search. The same answer as PoseNearest::nearest for that query over the
+//! same insertions and removals (the same distance, bit for bit) when ids
+//! are inserted in increasing order: ties go to the smaller id, which is
+//! then PoseNearest's insertion order.
+class QueryOrder {
+ public:
+  explicit QueryOrder(double heading_weight) : metric_(heading_weight) {}
+
+  //! Forgets every pose and ranks by distance to `query` from now on.
+  void reset(const geometry::Pose2& query);
+  //! Adds a pose with a non-negative id (not present).
+  void insert(const geometry::Pose2& pose, std::int32_t id);
+  //! Removes the pose with this id; unknown or removed ids are ignored.
+  void remove(std::int32_t id);
+  //! Ids of the (at most) k nearest poses, nearest first.
+  void nearest(std::size_t k, std::vector<std::int32_t>& out) const;
+  std::size_t size() const { return order_.size(); }
+
+ private:
+  PoseNearest metric_;  //!< only its distance is used
+  geometry::Pose2 query_{};
+  std::set<std::pair<double, std::int32_t>> order_;
+  std::vector<double> distance_of_id_;  //!< NaN: absent
 };
 
 }  // namespace hrs::planning

@@ -59,7 +59,7 @@ LegPlanner::LegPlanner(const geometry::Scene& scene, const CSpace& cspace, Plann
       hooks_(hooks),
       validator_(cspace, scene.wheelchair.turning_radius),
       nearest_(options.heading_weight),
-      untried_(options.heading_weight) {}
+      goal_order_(options.heading_weight) {}
 
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed) {
   RrtTree tree;
@@ -90,24 +90,25 @@ std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pos
     tree.nodes.push_back({pose, parent, std::move(piece), cost});
     last = static_cast<std::int32_t>(tree.nodes.size() - 1);
     nearest_.insert(pose, last);
-    untried_.insert(pose, last);
+    goal_order_.insert(pose, last);
     parent = last;
     if (i + 1 == steps && limit == total) reached = true;
   }
   return last;
 }
 
-void LegPlanner::index_tree(const RrtTree& tree) {
+void LegPlanner::index_tree(const RrtTree& tree, const Pose2& goal) {
   nearest_.clear();
-  untried_.clear();
+  goal_order_.reset(goal);
   for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
     nearest_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
-    untried_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
+    goal_order_.insert(tree.nodes[i].pose, static_cast<std::int32_t>(i));
   }
 }
 
 std::int32_t LegPlanner::closest_by_steering(const RrtTree& tree, const Pose2& target,
                                              Steering& steering) const {
+  if (&steering == static_cast<const Steering*>(&exact_)) return closest_exact(tree, target);
   std::int32_t best = -1;
   double best_length = std::numeric_limits<double>::infinity();
   for (std::int32_t id : knn_) {
@@ -120,18 +121,25 @@ std::int32_t LegPlanner::closest_by_steering(const RrtTree& tree, const Pose2& t
   return best;
 }
 
+std::int32_t LegPlanner::closest_exact(const RrtTree& tree, const Pose2& target) const {
+  poses_.clear();
+  for (std::int32_t id : knn_) poses_.push_back(tree.nodes[id].pose);
+  const std::size_t i = rs::first_shortest(poses_, target, radius_, bounds_);
+  return i < knn_.size() ? knn_[i] : -1;
+}
+
 std::int32_t LegPlanner::try_goal(RrtTree& tree, const Pose2& to, Steering& steering,
                                   std::size_t& tree_size_at_goal_attempt) {
   const std::size_t k = static_cast<std::size_t>(std::max(1, options_.k_nearest));
   if (options_.skip_tried_goal_nodes) {
-    untried_.nearest(to, k, knn_);  // the k nearest nodes not yet tried
+    goal_order_.nearest(k, knn_);  // the k nearest nodes not yet tried
     if (knn_.empty()) return -1;
   } else {
     // A goal attempt from an unchanged tree repeats the previous one exactly
     // (same nearest node, same curve, same collision), so it is skipped;
     // this changes the work, never the outcome.
     if (tree.nodes.size() == tree_size_at_goal_attempt) return -1;
-    nearest_.nearest(to, k, knn_);
+    goal_order_.nearest(k, knn_);
   }
   const std::int32_t best = closest_by_steering(tree, to, steering);
   if (best < 0) return -1;
@@ -142,9 +150,11 @@ std::int32_t LegPlanner::try_goal(RrtTree& tree, const Pose2& to, Steering& stee
   tree_size_at_goal_attempt = tree.nodes.size();
   // The chosen node and the nodes along its curve lead to the goal along the
   // same (blocked) curve: a shortest path's suffix is a shortest path.
-  untried_.remove(best);
-  for (std::size_t i = before; i < tree.nodes.size(); ++i)
-    untried_.remove(static_cast<std::int32_t>(i));
+  if (options_.skip_tried_goal_nodes) {
+    goal_order_.remove(best);
+    for (std::size_t i = before; i < tree.nodes.size(); ++i)
+      goal_order_.remove(static_cast<std::int32_t>(i));
+  }
   if (reached && pose_gap(tree.nodes[last].pose, to) <= options_.goal_tolerance) return last;
   return -1;
 }
@@ -170,7 +180,7 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   SampleSource& sampler = hooks_.sampler ? *hooks_.sampler : uniform_;
   Steering& steering = hooks_.steering ? *hooks_.steering : exact_;
   if (tree.nodes.empty()) tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  index_tree(tree);
+  index_tree(tree, to);
 
   const bool ends_free = validator_.pose_free(from) && validator_.pose_free(to);
   std::size_t tree_size_at_goal_attempt = 0;

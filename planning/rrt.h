@@ -113,12 +113,15 @@ class LegPlanner {
   //! `reached` when the whole path to `target` was added.
   std::int32_t extend(RrtTree& tree, std::int32_t from_node, const Pose2& target, double max_length,
                       bool& reached);
-  //! Indexes the tree's nodes for nearest-node queries (all nodes untried).
-  void index_tree(const RrtTree& tree);
+  //! Indexes the tree's nodes for nearest-node queries and orders them by
+  //! distance to `goal` (all nodes untried).
+  void index_tree(const RrtTree& tree, const Pose2& goal);
   //! Of the nodes in knn_, the one with the shortest steering distance to
   //! `target` (−1 when knn_ is empty).
   std::int32_t closest_by_steering(const RrtTree& tree, const Pose2& target,
                                    Steering& steering) const;
+  //! closest_by_steering() for the exact steering (rs::first_shortest).
+  std::int32_t closest_exact(const RrtTree& tree, const Pose2& target) const;
   //! A goal-biased iteration: extend the best of the k nearest (untried)
   //! nodes along the whole curve to `to`; the goal node when it is reached,
   //! else −1. `tree_size_at_goal_attempt` skips repeats (literal baseline).
@@ -136,8 +139,10 @@ class LegPlanner {
   PlannerHooks hooks_;  //!< resolved at each use, so the planner stays movable
   MotionValidator validator_;
   PoseNearest nearest_;
-  PoseNearest untried_;  //!< nodes not yet tried towards the goal
+  QueryOrder goal_order_;  //!< nodes by distance to the goal (untried ones only, by default)
   std::vector<std::int32_t> knn_;
+  mutable std::vector<Pose2> poses_;                            //!< closest_exact's scratch
+  mutable std::vector<std::pair<double, std::size_t>> bounds_;  //!< closest_exact's scratch
 };
 
 }  // namespace hrs::planning

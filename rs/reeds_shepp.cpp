@@ -641,6 +641,28 @@ double shortest_length(const Pose2& from, const Pose2& to, double radius) {
   return final_length(solve(to_local(from, to, radius))) * radius;
 }
 
+std::size_t first_shortest(std::span<const Pose2> from, const Pose2& to, double radius,
+                           std::vector<std::pair<double, std::size_t>>& scratch) {
+  // A skipped pose's length is at least its bound, which exceeds the best by
+  // more than the rounding of either (~1e-15 relative for room-sized poses).
+  constexpr double kRounding = 1e-9;  // relative
+  scratch.clear();
+  for (std::size_t i = 0; i < from.size(); ++i)
+    scratch.emplace_back(length_lower_bound(from[i], to, radius), i);
+  std::sort(scratch.begin(), scratch.end());
+  std::size_t best = from.size();
+  double best_length = std::numeric_limits<double>::infinity();
+  for (const auto& [bound, i] : scratch) {
+    if (bound > best_length + kRounding * (1.0 + best_length)) break;
+    const double d = shortest_length(from[i], to, radius);
+    if (d < best_length || (best < from.size() && d == best_length && i < best)) {
+      best_length = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
 ShortestWord shortest_word(const Pose2& from, const Pose2& to, double radius) {
   const Best b = solve(to_local(from, to, radius));
   return {final_length(b) * radius, word_of(b.code, b.v)};

@@ -12,9 +12,13 @@
 // and backwards symmetries), evaluated in closed form with shared trigonometry
 // and lower-bound pruning; see rs/reeds_shepp.cpp for the formulas' sources.
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -57,6 +61,22 @@ std::vector<Pose2> sample(const Pose2& start, const Path& path, double step);
 Path shortest_path(const Pose2& from, const Pose2& to, double radius);
 //! Its length only (no allocation).
 double shortest_length(const Pose2& from, const Pose2& to, double radius);
+//! A lower bound of shortest_length, without solving: the larger of the
+//! straight-line distance and radius · |Δθ| (Δθ wrapped to (−π, π]; a path
+//! whose curvature is at most 1 / radius turns at most ds / radius along ds).
+inline double length_lower_bound(const Pose2& from, const Pose2& to, double radius) {
+  const double dx = to.x - from.x, dy = to.y - from.y;
+  return std::max(std::sqrt(dx * dx + dy * dy),
+                  radius * std::abs(geometry::wrap_angle(to.theta - from.theta)));
+}
+//! The index in `from` of the pose with the shortest path to `to`, the first
+//! of equal lengths (from.size() when there is none of finite length): the
+//! answer of computing shortest_length for each in order and keeping a
+//! strictly shorter one, with fewer solves (candidates go by increasing
+//! length_lower_bound and stop once a bound exceeds the best length).
+//! `scratch` is reused between calls.
+std::size_t first_shortest(std::span<const Pose2> from, const Pose2& to, double radius,
+                           std::vector<std::pair<double, std::size_t>>& scratch);
 
 // ---- Additions beyond the planner's contract ------------------------------
 

@@ -1,5 +1,6 @@
 // The nearest-node index against a linear scan (insertions, removals,
-// heading wrap) and the path operations the planner builds trees with.
+// heading wrap), the fixed-query order against the index, and the path
+// operations the planner builds trees with.
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,43 @@ TEST(PoseNearest, RemovalsMatchLinearScanOverLivePoses) {
   EXPECT_GT(checked, 2000);
   EXPECT_EQ(std::count(live.begin(), live.end(), true), 0);  // drained to empty
 }
+// QueryOrder against PoseNearest asked the same fixed query, over 12000
+// interleaved inserts (ids increasing, a quarter of them repeating an
+// earlier pose so that distances tie) and removals; ids as the RRT uses them.
+TEST(QueryOrder, MatchesPoseNearestForItsQueryUnderInsertsAndRemovals) {
+  std::mt19937_64 rng(11);
+  for (int round = 0; round < 4; ++round) {
+    const Pose2 query{4 * uniform01(rng), 4 * uniform01(rng),
+                      std::numbers::pi * (2 * uniform01(rng) - 1)};
+    PoseNearest tree(0.7);
+    QueryOrder order(0.7);
+    order.reset(query);
+    std::vector<Pose2> poses;
+    std::vector<std::int32_t> want, got;
+    for (int step = 0; step < 3000; ++step) {
+      if (step % 5 < 3 || poses.empty()) {
+        const Pose2 p = !poses.empty() && step % 4 == 0
+                            ? poses[static_cast<std::size_t>(rng() % poses.size())]
+                            : Pose2{4 * uniform01(rng), 4 * uniform01(rng),
+                                    std::numbers::pi * (2 * uniform01(rng) - 1)};
+        poses.push_back(p);
+        const auto id = static_cast<std::int32_t>(poses.size() - 1);
+        tree.insert(p, id);
+        order.insert(p, id);
+      } else if (step % 5 == 3) {
+        const auto id = static_cast<std::int32_t>(rng() % (poses.size() + 3));
+        tree.remove(id);
+        order.remove(id);
+      } else {
+        const std::size_t k = 1 + step % 10;
+        tree.nearest(query, k, want);
+        order.nearest(k, got);
+        ASSERT_EQ(got, want) << "round " << round << " step " << step;
+      }
+    }
+  }
+}
+
 TEST(PoseNearest, DistanceWrapsHeading) {
   PoseNearest n(0.5);
   EXPECT_NEAR(n.distance({0, 0, 3.1}, {0, 0, -3.1}), 0.5 * (2 * std::numbers::pi - 6.2), 1e-12);

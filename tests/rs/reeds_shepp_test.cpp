@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "rs/reeds_shepp.h"
 #include "tests/support/poses.h"
@@ -139,6 +142,46 @@ TEST(RsShortest, DistanceIsAtLeastEuclidean) {
     const double d = std::hypot(b.x - a.x, b.y - a.y);
     EXPECT_GE(shortest_length(a, b, r), d - 1e-12 * (1.0 + d));
   });
+}
+
+TEST(RsShortest, LowerBoundNeverExceedsTheLength) {
+  int heading_bound_wins = 0;
+  for_random_pairs(41, 20000, [&](const Pose2& a, const Pose2& b, double r) {
+    const double lb = length_lower_bound(a, b, r), d = shortest_length(a, b, r);
+    EXPECT_LE(lb, d + tol(d));
+    if (lb > std::hypot(b.x - a.x, b.y - a.y) + 1e-12) ++heading_bound_wins;
+  });
+  EXPECT_GT(heading_bound_wins, 100);  // the heading term is exercised
+}
+
+// first_shortest against the plain loop (shortest_length in order, a
+// strictly shorter one kept): sets of 1..12 poses around a target, with
+// repeated poses so that ties occur; 4000 sets.
+TEST(RsShortest, FirstShortestIsTheFirstOfTheShortestLengths) {
+  std::mt19937_64 rng(43);
+  std::vector<std::pair<double, std::size_t>> scratch;
+  int ties = 0;
+  for (int c = 0; c < 4000; ++c) {
+    const double r = 0.3 + (c % 4) * 0.4;
+    const Pose2 to = random_pose(rng, 2.0);
+    std::vector<Pose2> from;
+    const int n = 1 + c % 12;
+    for (int i = 0; i < n; ++i)
+      from.push_back(i > 0 && rng() % 4 == 0 ? from[rng() % i] : random_pose(rng, 3.0));
+    std::size_t expected = from.size();
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      const double d = shortest_length(from[i], to, r);
+      if (d == best) ++ties;
+      if (d < best) {
+        best = d;
+        expected = i;
+      }
+    }
+    ASSERT_EQ(first_shortest(from, to, r, scratch), expected) << "set " << c;
+  }
+  EXPECT_GT(ties, 50);
+  EXPECT_EQ(first_shortest({}, Pose2{0, 0, 0}, 1.0, scratch), 0u);
 }
 
 TEST(RsShortest, InvariantUnderRigidMotions) {
