@@ -359,15 +359,27 @@ class DesignRun {
   //! misses. When stops are walled off in the free grid (grade > 0): the
   //! movable objects that border the door's reachable region (within the
   //! chair's half length + 25 cm) and are such a stop or lie within
-  //! kFocusReach of one of their goal poses. Otherwise (the grid joins
+  //! kFocusReach of one of their goal poses, and, for a stop with no free
+  //! goal pose at all, the stop and the movable objects within kFocusReach
+  //! of it wherever they are. Otherwise (the grid joins
   //! everything, the car still fails: a turn too tight, a gap the grid's
   //! margin lets through): the movable stops where unfound tours broke off
   //! and the movable objects within kFocusReach of their goal poses.
   std::vector<int> walling_objects() {
     if (!options_.escape) return {};
     const std::vector<int> walled = round_.walled_stops();
-    if (!walled.empty()) return focus_for(walled, true);
-    return focus_for(round_.failing_stops(), false);
+    if (walled.empty()) return focus_for(round_.failing_stops(), false);
+    std::vector<int> out = focus_for(walled, true);
+    // A stop without a single free goal pose is covered where it stands,
+    // however far the door's region reaches: it and its neighbours join
+    // (measured: a bookshelf facing the bed, otherwise never moved).
+    std::vector<int> covered;
+    for (int s : walled)
+      if (round_.goals_of(s).empty()) covered.push_back(s);
+    for (int i : focus_for(covered, false))
+      if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+    std::sort(out.begin(), out.end());
+    return out;
   }
 
   //! The movable objects near `stops` (see walling_objects()); `in_grid`:
