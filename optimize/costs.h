@@ -25,11 +25,11 @@
 //   most ds / r along ds), and a deficit of w_ref per leg (the per-leg mean
 //   of max(0, w_ref − width) is at most w_ref). So an unfound tour none of
 //   whose legs was joined costs at least as much as any found tour whose
-//   legs are no longer than the penalty's, whatever the path weights. (Charging its length alone let a
-//   room whose found tours turn a lot value a missing tour at about two
-//   found ones; docs/optimize.md measures the difference.) So that the
-//   annealer can tell "nearly tourable" from "sealed off", each leg's share
-//   is graded: the
+//   legs are no longer than the penalty's, whatever the path weights.
+//   (Charged its length alone, a missing tour cost about two found ones in
+//   a room whose tours turn a lot, and the annealer traded tours for
+//   interior cost; docs/optimize.md.) So that the annealer can tell
+//   "nearly tourable" from "sealed off", each leg's share is graded: the
 //   first Tour::stats.depth legs (those the planner could join before
 //   failing) are charged 1/2 of it; a leg not joined is charged 1 + b/2,
 //   where b (planning::ReachGate::blockage) is 0 when the free grid lets the

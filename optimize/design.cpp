@@ -111,6 +111,7 @@ class DesignRun {
     plan_current();
     current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
     result_.initial = current_terms_;
+    refresh_open_stops();
     if (unblock()) {
       plan_current();  // the annealing starts from the unblocked layout
       current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
@@ -181,7 +182,48 @@ class DesignRun {
     work_.objects[moved].pose = p[moved];
     const bool ok = object_violation(work_, moved).empty();
     work_.objects[moved].pose = old;
-    return ok;
+    return ok && !covers_a_stop(p[moved], moved);
+  }
+
+  //! With `escape`: true when moving object `moved` to `to` leaves a stop
+  //! that has a free goal pose now without any (docs/optimize.md "Blocked
+  //! layouts"). Such a layout has no tour through that stop whatever the
+  //! planner does, and once the annealer accepts one (while hot) the move
+  //! back is seldom drawn. Only the stops within reach of the object's new
+  //! footprint are asked, with the object moved in the C-space and back.
+  bool covers_a_stop(const Pose2& to, int moved) {
+    if (!options_.escape || !plan_every_iteration_ || open_stops_.empty()) return false;
+    geometry::Object o = work_.objects[moved];
+    o.pose = to;
+    const geometry::Polygon fp = geometry::world_footprint(o);
+    const Pose2 from = cspace_.object_pose(moved);
+    bool moved_in_cspace = false;
+    bool covers = false;
+    for (int s : open_stops_) {
+      // A goal pose's chair lies within gap + its diagonal of the stop.
+      const double reach = work_.objects[s].approach_or_default().gap + 0.01 +
+                           std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
+      if (s != moved && footprint_gap(geometry::world_footprint(work_.objects[s]), fp) > reach)
+        continue;
+      if (!moved_in_cspace) {
+        cspace_.move_object(moved, to);
+        moved_in_cspace = true;
+      }
+      if (round_.goals_of(s).empty()) {
+        covers = true;
+        break;
+      }
+    }
+    if (moved_in_cspace) cspace_.move_object(moved, from);
+    return covers;
+  }
+
+  //! The stops with a free goal pose in the current layout (covers_a_stop).
+  void refresh_open_stops() {
+    open_stops_.clear();
+    if (!options_.escape || !plan_every_iteration_) return;
+    for (int s : stop_objects())
+      if (!round_.goals_of(s).empty()) open_stops_.push_back(s);
   }
 
   //! Applies a proposal to the C-space, tours it and returns its cost, or
@@ -286,6 +328,7 @@ class DesignRun {
         poses_[o] = *to;
         changed = true;
         ++result_.unblock.accepted;
+        refresh_open_stops();
       } else {
         place(o, from);
       }
@@ -451,6 +494,7 @@ class DesignRun {
       // Right after the decision the round's tours and grades are still the
       // accepted layout's: the focus is computed for accepted layouts only.
       focus_current_ = plan_every_iteration_ ? walling_objects() : std::vector<int>{};
+      refresh_open_stops();
     }
     result_.trace.push_back(step);
     if (progress_) progress_(step);
@@ -509,6 +553,7 @@ class DesignRun {
   std::vector<Pose2> poses_;
   std::vector<bool> movable_;
   std::vector<int> focus_current_;  //!< walling_objects() of the current layout
+  std::vector<int> open_stops_;     //!< stops with a free goal pose in the current layout
   bool plan_every_iteration_ = true;
   int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
   double planning_ms_ = 0.0;
