@@ -215,6 +215,7 @@ class DesignRun {
       }
     }
     if (moved_in_cspace) cspace_.move_object(moved, from);
+    if (covers) ++result_.covering_moves;
     return covers;
   }
 

@@ -116,6 +116,9 @@ struct DesignResult {
   struct Unblock {
     int walled_before = 0, walled_after = 0, proposals = 0, accepted = 0;
   } unblock;
+  //! Moves refused because they would leave a stop without any free goal
+  //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.
+  int covering_moves = 0;
   long legs_refused = 0;     //!< legs the free grid proved impossible
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
   double gate_ms = 0.0;          //!< their total time

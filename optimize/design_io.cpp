@@ -255,6 +255,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"walled_after", result.unblock.walled_after},
             {"proposals", result.unblock.proposals},
             {"accepted", result.unblock.accepted}}},
+          {"covering_moves", result.covering_moves},
           {"refused_legs",
            {{"legs", result.legs_refused},
             {"reachability_fills", result.gate_fills},
