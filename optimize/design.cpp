@@ -277,13 +277,18 @@ class DesignRun {
 
   //! The grid's lower bounds of the tours' costs before anything is planned
   //! (TourRound::certain_floors), or none. The baseline's legs are costly
-  //! enough to pay for a grid fill before any of them; the proposed
-  //! planner's typical layout costs about as much as a fill, so it skips
-  //! them, except with every technique off: then it is the baseline and
-  //! bounds like it, so that both give the same trace.
+  //! enough to pay for a grid fill before any of them while tours are
+  //! missing; once the current layout has all its tours, a proposal seldom
+  //! walls a stop off (a covering move is refused), and the fill would be
+  //! most of its planning, so none is asked. The proposed planner's typical
+  //! layout costs about as much as a fill, so it skips them, except with
+  //! every technique off: then it is the baseline and bounds like it, so
+  //! that both give the same trace. Floors only bound: the decisions are
+  //! the same with or without them.
   std::vector<double> pre_planning_floors() {
     const bool baseline_like = !options_.proposed || !options_.reuse.any();
     if (!baseline_like || !options_.refuse_impossible) return {};
+    if (current_terms_.tours_found == current_terms_.tours_total) return {};
     const auto f0 = Clock::now();
     std::vector<double> floors = round_.certain_floors(model_);
     planning_ms_ = 1e3 * seconds_since(f0);  // planning work: counted as such

@@ -180,7 +180,13 @@ LegResult ReusePlanner::fresh_plan(const LegKey& key, const Pose2& from, const P
     }
   }
   const bool staged = options_.proofs && options_.proof_after < budget;
-  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget);
+  // With every technique off this is the baseline, which asks the gate only
+  // after kRefuseAfter iterations (TourHooks::gate); with any on, the gate
+  // was asked before the repair.
+  const GiveUpCheck check{kRefuseAfter, [&] { return gate_->refuses(from, to); }};
+  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget,
+                             gate_ && !options_.any() ? &check : nullptr);
+  if (r.gave_up) slot.proven = true;
   add_stats(stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
   if (!r.found && staged) {
@@ -208,7 +214,7 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     slot.failure_reused = true;
     return out;  // the recorded RRT run would repeat query for query
   }
-  if (gate_ && gate_->refuses(from, to)) {
+  if (gate_ && options_.any() && gate_->refuses(from, to)) {
     slot.proven = true;
     return out;  // no motion joins the ends: no RRT could find one
   }

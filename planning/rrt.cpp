@@ -67,6 +67,13 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   return plan(from, to, seed, tree);
 }
 
+LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed,
+                           const GiveUpCheck& check) {
+  RrtTree tree;
+  tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
+  return plan(from, to, seed, tree, -1, &check);
+}
+
 std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pose2& target,
                                 double max_length, bool& reached) {
   reached = false;
@@ -169,7 +176,7 @@ void LegPlanner::try_sample(RrtTree& tree, const Pose2& target, Steering& steeri
 }
 
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
-                           int max_iterations) {
+                           int max_iterations, const GiveUpCheck* check) {
   // Documented preconditions (rrt.h): a tree to grow is rooted at `from`.
   assert(tree.nodes.empty() || geometry::pose_gap(tree.nodes.front().pose, from) <= 1e-9);
   const auto t0 = std::chrono::steady_clock::now();
@@ -190,6 +197,10 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   int it = 0;
   while (ends_free && goal_node < 0 && it < iteration_cap &&
          static_cast<int>(tree.nodes.size()) < options_.max_nodes) {
+    if (check && it == check->after && check->give_up && check->give_up()) {
+      result.gave_up = true;
+      break;
+    }
     ++it;
     // Goal bias (§III-B): the goal itself, else a sample (one draw each).
     if (unit(rng) < options_.goal_bias) {

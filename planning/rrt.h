@@ -22,6 +22,7 @@
 // instance per thread. Results depend only on the inputs and the seed.
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <random>
 #include <vector>
@@ -65,9 +66,19 @@ struct LegStats {
   double time_ms = 0.0;                //!< wall time of the query
 };
 
+//! A question the RRT asks once, after `after` iterations without reaching
+//! the goal: true stops it there (not found). The rest of the run is the
+//! same as without it, draw for draw (the baseline asks whether the free
+//! grid separates the leg's ends: then no RRT could find it).
+struct GiveUpCheck {
+  int after = 0;
+  std::function<bool()> give_up;
+};
+
 //! Result of one leg query: the path from `from` to `to` when found.
 struct LegResult {
   bool found = false;
+  bool gave_up = false;  //!< stopped by a GiveUpCheck
   rs::Path path;  //!< driven from the query's `from`; radius = the planner's radius
   LegStats stats;
 };
@@ -100,7 +111,9 @@ class LegPlanner {
   //! current layout: the caller prunes, §V-C). The tree keeps its new nodes.
   //! `max_iterations` >= 0 overrides the option for this query (a repair, §V-B).
   LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
-                 int max_iterations = -1);
+                 int max_iterations = -1, const GiveUpCheck* check = nullptr);
+  //! plan() with a fresh tree and `check` asked once (GiveUpCheck).
+  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, const GiveUpCheck& check);
 
   const PlannerOptions& options() const { return options_; }
   double radius() const { return radius_; }

@@ -150,10 +150,14 @@ TourPlanner::Fetch TourPlanner::fetch_leg(std::span<const LegRequest> requests, 
                                        requests.subspan(c + 1), hooks_.tour);
   } else {
     outcome.planned = true;
-    if (may_plan && hooks_.gate && hooks_.gate->refuses(r.from, r.to)) {
-      ++tour.stats.legs_refused;
-    } else if (may_plan) {
-      LegResult result = planner_.plan(r.from, r.to, leg_seed(seed_, r.key));
+    if (may_plan) {
+      // The gate is asked only once the RRT has run kRefuseAfter iterations
+      // in vain: most legs are found sooner, and their layouts need no grid
+      // fill. A refused leg could never be found, so the tour is the same.
+      const GiveUpCheck check{kRefuseAfter, [&] { return hooks_.gate->refuses(r.from, r.to); }};
+      LegResult result = hooks_.gate ? planner_.plan(r.from, r.to, leg_seed(seed_, r.key), check)
+                                     : planner_.plan(r.from, r.to, leg_seed(seed_, r.key));
+      if (result.gave_up) ++tour.stats.legs_refused;
       outcome.found = result.found;
       outcome.path = std::move(result.path);
       outcome.stats = result.stats;

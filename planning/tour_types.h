@@ -21,6 +21,10 @@ namespace hrs::planning {
 
 //! Id of the start node in sequences (the door).
 inline constexpr std::string_view kDoorId = geometry::kStartNodeId;
+//! RRT iterations a baseline leg runs before the gate is asked (TourHooks):
+//! the gate's fill costs about as much as a few hundred iterations, and
+//! most found legs need fewer.
+inline constexpr int kRefuseAfter = 300;
 
 struct TourOptions {
   PlannerOptions planner;  //!< the leg planner (baseline RRT, §III-B)
@@ -45,11 +49,12 @@ struct TourHooks {
   //! Non-null: found legs are measured through it (same results, work kept
   //! across tours and layouts: planning/leg_measures.h); null: afresh.
   LegMeasures* measures = nullptr;
-  //! Non-null: a leg the gate proves impossible is not planned; it counts
-  //! as a planned leg that failed (legs_planned, legs_failed, max_leg_plans),
-  //! exactly as the RRT query it replaces, so tours are the same with and
-  //! without the gate. Used for the baseline's own legs; the proposed
-  //! planner asks its gate inside the provider.
+  //! Non-null: a leg still unfound after kRefuseAfter RRT iterations whose
+  //! ends the gate separates stops there; it counts as a planned leg that
+  //! failed (legs_planned, legs_failed, max_leg_plans), exactly as the full
+  //! RRT query it cuts short, so tours are the same with and without the
+  //! gate. Used for the baseline's own legs; the proposed planner asks its
+  //! gate inside the provider.
   const ReachGate* gate = nullptr;
   //! Non-null and set: the tour stops before its next leg and is not found
   //! (the caller no longer needs it; see optimize/design.cpp).
