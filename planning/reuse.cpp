@@ -180,12 +180,12 @@ LegResult ReusePlanner::fresh_plan(const LegKey& key, const Pose2& from, const P
     }
   }
   const bool staged = options_.proofs && options_.proof_after < budget;
-  // With every technique off this is the baseline, which asks the gate only
-  // after kRefuseAfter iterations (TourHooks::gate); with any on, the gate
-  // was asked before the repair.
+  // The gate is asked, as for the baseline (TourHooks::gate), only once the
+  // RRT has run kRefuseAfter iterations in vain: most legs are found or
+  // served sooner, and their layouts need no grid fill.
   const GiveUpCheck check{kRefuseAfter, [&] { return gate_->refuses(from, to); }};
   LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget,
-                             gate_ && !options_.any() ? &check : nullptr);
+                             gate_ ? &check : nullptr);
   if (r.gave_up) slot.proven = true;
   add_stats(stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
@@ -213,10 +213,6 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
   if (options_.failures && failures_.repeats(key, from, to, *cspace_)) {
     slot.failure_reused = true;
     return out;  // the recorded RRT run would repeat query for query
-  }
-  if (gate_ && options_.any() && gate_->refuses(from, to)) {
-    slot.proven = true;
-    return out;  // no motion joins the ends: no RRT could find one
   }
   if (options_.paths && options_.repair) {
     if (std::optional<LegOutcome> r = repair(key, from, to, seed, planner)) {

@@ -73,8 +73,9 @@ class ReusePlanner final : public LegProvider {
   LegOutcome resolve(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t tour_seed,
                      bool may_plan, LegPlanner& planner, std::span<const LegRequest> next = {},
                      int tour = 0) override;
-  //! Refuses, before any RRT, the legs `gate` proves impossible (null: none).
-  //! They count as failed fresh plans and as legs_proven.
+  //! Stops a fresh plan still unfound after kRefuseAfter RRT iterations
+  //! when `gate` proves its leg impossible (null: never). Such legs count as
+  //! failed fresh plans and as legs_proven.
   void set_gate(const ReachGate* gate) { gate_ = gate; }
 
   //! Legs planned by `speculate` and how many of them a tour then asked for
