@@ -52,9 +52,9 @@ struct DesignOptions {
   //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
   bool proposed = false;
   planning::ReuseOptions reuse;  //!< its techniques (all on by default)
-  //! Beyond the paper (docs/optimize.md): legs the free grid proves
-  //! impossible are refused before any RRT runs, for either planner. The
-  //! baseline's tours are the same with it as without.
+  //! Beyond the paper (docs/optimize.md): a leg still unfound after 300
+  //! RRT iterations whose ends the free grid separates stops there, for
+  //! either planner. The baseline's tours are the same with it as without.
   bool refuse_impossible = true;
   //! Beyond the paper: unfound tours are charged by how walled off their
   //! stops are (optimize/costs.h), so blocked layouts can be climbed out of.

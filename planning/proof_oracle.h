@@ -14,8 +14,8 @@
 // separates tighter pockets. On the gate's own grid the oracle would also
 // prove almost nothing new: when the gate is on (it is optional), a leg
 // with one end in the door's component of that grid and one outside is
-// refused before the RRT runs, one with both ends in it is connected
-// there, and every tour's legs start in it.
+// refused once its RRT has run 300 iterations, one with both ends in it is
+// connected there, and every tour's legs start in it.
 
 #include <cstddef>
 #include <memory>

@@ -1,6 +1,6 @@
 #pragma once
-// Refusing impossible legs before any RRT runs, and measuring how blocked a
-// layout is (beyond the paper; docs/planner.md "Refused legs",
+// Refusing impossible legs once their RRT has run a while, and measuring how
+// blocked a layout is (beyond the paper; docs/optimize.md "Refused legs",
 // docs/optimize.md "Blocked layouts"). The annealer's proposals often wall
 // an object, or the door itself, off from the rest of the room; the RRT of
 // §III-B then spends its whole iteration budget on every leg into the
@@ -12,7 +12,8 @@
 // layout and only when first asked, the set of cells the door's start pose
 // reaches (geometry::ReachableSet). A leg with one end inside that set and
 // the other outside is joined by no collision-free motion of any vehicle:
-// it is refused. A leg with both ends outside is never refused (the grid
+// it is refused (the planners ask after kRefuseAfter RRT iterations, so
+// that layouts whose legs are all found soon need no fill). A leg with both ends outside is never refused (the grid
 // says nothing about it). Every tour leaves from the door, so in practice
 // every leg's start is inside the set.
 //
