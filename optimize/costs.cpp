@@ -193,14 +193,16 @@ CostTerms CostModel::evaluate(const InteriorCosts& interior,
                               blockage ? std::span<const double>((*blockage)[k])
                                        : std::span<const double>());
     const double l = seq_weight_[k];
+    const double length = wp[0] * l * c[0], rotation = wp[1] * l * c[1],
+                 clearance = wp[2] * l * c[2];
     ++t.tours_total;
     if (tours[k].found) {
       ++t.tours_found;
-      t.path_length += wp[0] * l * c[0];
-      t.path_rotation += wp[1] * l * c[1];
-      t.path_clearance += wp[2] * l * c[2];
+      t.path_length += length;
+      t.path_rotation += rotation;
+      t.path_clearance += clearance;
     } else {
-      t.unfound_penalty += wp[0] * l * c[0] + wp[1] * l * c[1] + wp[2] * l * c[2];
+      t.unfound_penalty += length + rotation + clearance;
     }
   }
   return t;

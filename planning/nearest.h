@@ -93,7 +93,6 @@ class QueryOrder {
   void remove(std::int32_t id);
   //! Ids of the (at most) k nearest poses, nearest first.
   void nearest(std::size_t k, std::vector<std::int32_t>& out) const;
-  std::size_t size() const { return order_.size(); }
 
  private:
   PoseNearest metric_;  //!< only its distance is used

@@ -13,9 +13,9 @@
 // reaches (geometry::ReachableSet). A leg with one end inside that set and
 // the other outside is joined by no collision-free motion of any vehicle:
 // it is refused (the planners ask after kRefuseAfter RRT iterations, so
-// that layouts whose legs are all found soon need no fill). A leg with both ends outside is never refused (the grid
-// says nothing about it). Every tour leaves from the door, so in practice
-// every leg's start is inside the set.
+// that layouts whose legs are all found soon need no fill). A leg with both
+// ends outside is never refused (the grid says nothing about it). Every tour
+// leaves from the door, so in practice every leg's start is inside the set.
 //
 // Thread-safety: invalidate() between planning rounds only; the queries are
 // const and thread-safe (the first one fills the set under a lock; later

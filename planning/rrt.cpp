@@ -61,17 +61,11 @@ LegPlanner::LegPlanner(const geometry::Scene& scene, const CSpace& cspace, Plann
       nearest_(options.heading_weight),
       goal_order_(options.heading_weight) {}
 
-LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed) {
-  RrtTree tree;
-  tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  return plan(from, to, seed, tree);
-}
-
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed,
-                           const GiveUpCheck& check) {
+                           const GiveUpCheck* check) {
   RrtTree tree;
   tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  return plan(from, to, seed, tree, -1, &check);
+  return plan(from, to, seed, tree, -1, check);
 }
 
 std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pose2& target,

@@ -106,14 +106,14 @@ class LegPlanner {
              PlannerHooks hooks = {});
 
   //! Plans from `from` to `to` with a fresh tree; deterministic in `seed`.
-  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed);
+  //! `check` (may be null) is asked once (GiveUpCheck).
+  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed,
+                 const GiveUpCheck* check = nullptr);
   //! Plans by growing `tree` (its root must be `from`, its edges free in the
   //! current layout: the caller prunes, §V-C). The tree keeps its new nodes.
   //! `max_iterations` >= 0 overrides the option for this query (a repair, §V-B).
   LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
                  int max_iterations = -1, const GiveUpCheck* check = nullptr);
-  //! plan() with a fresh tree and `check` asked once (GiveUpCheck).
-  LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, const GiveUpCheck& check);
 
   const PlannerOptions& options() const { return options_; }
   double radius() const { return radius_; }

@@ -155,8 +155,8 @@ TourPlanner::Fetch TourPlanner::fetch_leg(std::span<const LegRequest> requests, 
       // in vain: most legs are found sooner, and their layouts need no grid
       // fill. A refused leg could never be found, so the tour is the same.
       const GiveUpCheck check{kRefuseAfter, [&] { return hooks_.gate->refuses(r.from, r.to); }};
-      LegResult result = hooks_.gate ? planner_.plan(r.from, r.to, leg_seed(seed_, r.key), check)
-                                     : planner_.plan(r.from, r.to, leg_seed(seed_, r.key));
+      LegResult result =
+          planner_.plan(r.from, r.to, leg_seed(seed_, r.key), hooks_.gate ? &check : nullptr);
       if (result.gave_up) ++tour.stats.legs_refused;
       outcome.found = result.found;
       outcome.path = std::move(result.path);

@@ -39,13 +39,13 @@ Scene shipped(const std::string& file) {
   return geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
 }
 
-//! A 150-iteration baseline design with two threads, otherwise defaults.
-DesignResult design_150(const Scene& scene, std::uint64_t seed) {
+//! Baseline design options with `seed`, `iterations` and two threads.
+DesignOptions options(std::uint64_t seed, int iterations) {
   DesignOptions o;
   o.seed = seed;
-  o.iterations = 150;
+  o.iterations = iterations;
   o.threads = 2;
-  return design(scene, o);
+  return o;
 }
 
 //! The final layout poses, costs and tours of two designs are the same;
@@ -99,10 +99,7 @@ TEST(DesignLoop, EarlyRejectionMakesTheSameDecisionsAsFullEvaluation) {
     for (std::uint64_t seed = 1; seed <= 3; ++seed) {
       DesignResult r[2];
       for (int early = 0; early < 2; ++early) {
-        DesignOptions o;
-        o.seed = seed;
-        o.iterations = 40;
-        o.threads = 2;
+        DesignOptions o = options(seed, 40);
         o.early_reject = early == 1;
         r[early] = design(scene, o);
       }
@@ -138,10 +135,7 @@ TEST(DesignLoop, RefusingImpossibleLegsLeavesTheBaselinesDesignUnchanged) {
     for (std::uint64_t seed = 1; seed <= 2; ++seed) {
       DesignResult r[2];
       for (int refuse = 0; refuse < 2; ++refuse) {
-        DesignOptions o;
-        o.seed = seed;
-        o.iterations = 40;
-        o.threads = 2;
+        DesignOptions o = options(seed, 40);
         o.refuse_impossible = refuse == 1;
         r[refuse] = design(scene, o);
       }
@@ -205,11 +199,7 @@ TEST(DesignLoop, EscapeOpensTheSealedLStudio) {
   // the annealer relocate the sofa. Seed 3 ends with 10/10 (`hrspace design
   // scenes/l_studio.json --iterations 700 --seed 3 --threads 2`).
   const Scene scene = shipped("l_studio.json");
-  DesignOptions o;
-  o.seed = 3;
-  o.iterations = 700;
-  o.threads = 2;
-  const DesignResult r = design(scene, o);
+  const DesignResult r = design(scene, options(3, 700));
   std::printf("l_studio seed 3: tours %d/%d -> %d/%d, cost %.4f -> %.4f, %ld legs refused\n",
               r.initial.tours_found, r.initial.tours_total, r.final.tours_found,
               r.final.tours_total, r.initial.total(), r.final.total(), r.legs_refused);
@@ -230,10 +220,7 @@ TEST(DesignLoop, AStopWithNoFreeGoalPoseIsMovedOut) {
   // stop without a free goal pose and its neighbours do (`hrspace design
   // scenes/narrow_passage.json --planner proposed --seed 5 --threads 2`).
   const Scene scene = shipped("narrow_passage.json");
-  DesignOptions o;
-  o.seed = 5;
-  o.iterations = 700;
-  o.threads = 2;
+  DesignOptions o = options(5, 700);
   o.proposed = true;  // all techniques, as --planner proposed
   const DesignResult r = design(scene, o);
   std::printf("narrow_passage proposed seed 5: tours %d/%d, cost %.4f\n", r.final.tours_found,
@@ -253,7 +240,7 @@ TEST(DesignLoop, StopsThatCanBeApproachedStaySo) {
     const Scene scene = shipped(file);
     const geometry::CSpace before(scene);
     for (std::uint64_t seed = 1; seed <= 2; ++seed) {
-      const DesignResult r = design_150(scene, seed);
+      const DesignResult r = design(scene, options(seed, 150));
       refused += r.covering_moves;
       const geometry::CSpace after(r.layout);
       std::vector<std::string> stops;
@@ -293,7 +280,7 @@ TEST(DesignLoop, LargeClearanceWeightWidensTheToursCorridors) {
     scene.weights.path = {1.0, 1.0, weights[w]};
     double seeds_narrowest = 0.0, seeds_deficit = 0.0;
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-      const DesignResult r = design_150(scene, seed);
+      const DesignResult r = design(scene, options(seed, 150));
       ASSERT_TRUE(r.valid);
       double n = 0.0, d = 0.0;
       int k = 0;
