@@ -27,6 +27,7 @@ void BM_BedroomDesign(benchmark::State& state) {
   optimize::DesignResult r;
   for (auto _ : state) {
     optimize::DesignOptions options;
+    options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
     options.seed = 1;
     options.iterations = static_cast<int>(state.range(0));
     options.threads = static_cast<int>(state.range(1));

@@ -150,7 +150,7 @@ std::vector<RunSpec> rrt_runs(const StudyConfig& c) {
 RunOutput rrt_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene scene = load_room(context.config, param(spec, "room"));
   optimize::DesignOptions o = run_options(spec, context);
-  if (const auto t = spec.params.get("tree_max_nodes")) o.reuse.tree_max_nodes = std::stoi(*t);
+  if (const auto t = spec.params.get("tree_max_nodes")) o.planner.reuse.tree_max_nodes = std::stoi(*t);
   const optimize::DesignResult r = optimize::design(scene, o, context.stop);
   RunOutput out = design_output(r);
   if (out.stopped) return out;

@@ -19,22 +19,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-//! The planners the studies compare.
+//! The planners the studies compare: a name in run keys and tables, and the
+//! planner text (api::parse_planner) it stands for.
 struct PlannerSpec {
   const char* name;
-  const char* reuse;  //!< nullptr: the baseline RRT; else api::parse_reuse list
-  bool literal;       //!< the paper's literal baseline: tried goal nodes are not skipped
-  const char* what;
+  const char* config;
 };
 
 constexpr PlannerSpec kPlanners[] = {
-    {"literal", nullptr, true, "the paper's baseline RRT read literally (§III-B)"},
-    {"baseline", nullptr, false, "our baseline RRT (tried goal nodes skipped)"},
-    {"paper", "samples,steering,paths,trees", false, "proposed, the paper's techniques (§V)"},
-    {"all", "all", false, "proposed, every technique"},
-    {"samples_steering", "samples,steering", false, "proposed, the RS-decomposition only (§V-A)"},
-    {"none", "none", false,
-     "proposed with every technique off (= baseline, counts RRT iterations)"},
+    {"literal", "literal"},
+    {"baseline", "baseline"},
+    {"paper", "paper"},
+    {"all", "default"},
+    {"default", "default"},
+    {"samples_steering", "default,-paths,-trees,-failures,-shortcuts,-metrics,-speculate"},
+    {"none", "default,-samples,-steering,-paths,-trees,-failures,-shortcuts,-metrics,-speculate"},
 };
 
 const PlannerSpec& planner_spec(const std::string& name) {
@@ -130,14 +129,11 @@ std::vector<std::string> seed_list(const StudyConfig& c) {
 
 optimize::DesignOptions design_options(const StudyConfig& config, const std::string& planner,
                                        std::uint64_t seed) {
-  const PlannerSpec& p = planner_spec(planner);
   optimize::DesignOptions o;
   o.seed = seed;
   o.iterations = config.iterations;
   o.threads = config.threads;
-  o.proposed = p.reuse != nullptr;
-  if (p.reuse) o.reuse = api::parse_reuse(p.reuse);
-  if (p.literal) o.tour.planner.skip_tried_goal_nodes = false;
+  o.planner = api::parse_planner(planner_spec(planner).config);
   return o;
 }
 

@@ -192,7 +192,7 @@ class DesignRun {
   //! back is seldom drawn. Only the stops within reach of the object's new
   //! footprint are asked, with the object moved in the C-space and back.
   bool covers_a_stop(const Pose2& to, int moved) {
-    if (!options_.escape || !plan_every_iteration_ || open_stops_.empty()) return false;
+    if (!options_.planner.escape || !plan_every_iteration_ || open_stops_.empty()) return false;
     geometry::Object o = work_.objects[moved];
     o.pose = to;
     const geometry::Polygon fp = geometry::world_footprint(o);
@@ -222,7 +222,7 @@ class DesignRun {
   //! The stops with a free goal pose in the current layout (covers_a_stop).
   void refresh_open_stops() {
     open_stops_.clear();
-    if (!options_.escape || !plan_every_iteration_) return;
+    if (!options_.planner.escape || !plan_every_iteration_) return;
     for (int s : stop_objects())
       if (!round_.goals_of(s).empty()) open_stops_.push_back(s);
   }
@@ -242,7 +242,7 @@ class DesignRun {
       return proposed_terms_.total();
     }
     const InteriorCosts in = model_.interior(p);
-    if (!options_.early_reject) {
+    if (!options_.planner.early) {
       plan_current();
       proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage());
       return proposed_terms_.total();
@@ -286,8 +286,8 @@ class DesignRun {
   //! that both give the same trace. Floors only bound: the decisions are
   //! the same with or without them.
   std::vector<double> pre_planning_floors() {
-    const bool baseline_like = !options_.proposed || !options_.reuse.any();
-    if (!baseline_like || !options_.refuse_impossible) return {};
+    const bool baseline_like = !options_.planner.proposed || !options_.planner.reuse.any();
+    if (!baseline_like || !options_.planner.refuse) return {};
     if (current_terms_.tours_found == current_terms_.tours_total) return {};
     const auto f0 = Clock::now();
     std::vector<double> floors = round_.certain_floors(model_);
@@ -306,7 +306,7 @@ class DesignRun {
   //! Returns true when the layout changed; the annealing starts from it.
   bool unblock() {
     static constexpr int kUnblockProposals = 300;
-    if (!options_.escape || !plan_every_iteration_) return false;
+    if (!options_.planner.escape || !plan_every_iteration_) return false;
     const std::vector<int> stops = stop_objects();
     double score = 0.0;
     std::vector<int> walled = walled_off(stops, score);
@@ -415,7 +415,7 @@ class DesignRun {
   //! margin lets through): the movable stops where unfound tours broke off
   //! and the movable objects within kFocusReach of their goal poses.
   std::vector<int> walling_objects() {
-    if (!options_.escape) return {};
+    if (!options_.planner.escape) return {};
     const std::vector<int> walled = round_.walled_stops();
     if (walled.empty()) return focus_for(round_.failing_stops(), false);
     std::vector<int> out = focus_for(walled, true);
@@ -532,7 +532,8 @@ class DesignRun {
     result_.valid_proposals = r.valid_proposals;
     result_.accepted = r.accepted;
     result_.stopped = r.stopped;
-    result_.proposed = options_.proposed;
+    result_.proposed = options_.planner.proposed;
+    result_.planner = options_.planner.name();
     result_.gate_fills = round_.gate().fills();
     result_.gate_ms = round_.gate().fill_ms();
     if (result_.tours_planned > 0)
@@ -540,7 +541,7 @@ class DesignRun {
           result_.early.tours_skipped * result_.time_planning_s / result_.tours_planned;
     if (planning::ReusePlanner* reuse = round_.reuse()) {
       result_.legs_refused = static_cast<long>(reuse->totals().legs_proven);
-      result_.reuse = options_.reuse.names();
+      result_.reuse = options_.planner.reuse.names();
       result_.counters = reuse->totals();
     }
   }

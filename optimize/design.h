@@ -32,6 +32,7 @@
 #include "geometry/scene.h"
 #include "optimize/annealer.h"
 #include "optimize/costs.h"
+#include "optimize/planner_config.h"
 #include "optimize/sequences.h"
 #include "planning/reach_gate.h"
 #include "planning/recheck.h"
@@ -49,19 +50,10 @@ struct DesignOptions {
   AnnealOptions anneal;            //!< moves; its temperatures and iterations are set from above
   planning::TourOptions tour;      //!< the tour planner (baseline)
   geometry::CSpaceOptions cspace;
-  //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
-  bool proposed = false;
-  planning::ReuseOptions reuse;  //!< its techniques (all on by default)
-  //! Beyond the paper (docs/optimize.md): a leg still unfound after 300
-  //! RRT iterations whose ends the free grid separates stops there, for
-  //! either planner. The baseline's tours are the same with it as without.
-  bool refuse_impossible = true;
-  //! Beyond the paper: unfound tours are charged by how walled off their
-  //! stops are (optimize/costs.h), so blocked layouts can be climbed out of.
-  bool escape = true;
-  //! Beyond the paper: a proposal stops being planned once a lower bound of
-  //! its cost is rejected by the Metropolis draw (the same decision).
-  bool early_reject = true;
+  //! Which planner and which of the design loop's additions (refusal gate,
+  //! escape, early rejection, goal skipping): optimize/planner_config.h.
+  //! `tour.planner.skip_tried_goal_nodes` is taken from it.
+  PlannerConfig planner;
   planning::ReachGateOptions gate;  //!< the grid behind refusals and escape
   //! When set, the object poses of every planned layout are appended here,
   //! in planning order (the input of replay_planning()).
@@ -123,6 +115,7 @@ struct DesignResult {
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
   double gate_ms = 0.0;          //!< their total time
   bool proposed = false;             //!< planned by the proposed planner
+  std::string planner;               //!< the planner configuration's name (PlannerConfig::name)
   std::string reuse;                 //!< its techniques ("none" … "samples,steering,paths,trees")
   planning::ReuseCounters counters;  //!< its leg counts and RRT-iterations histogram
 };

@@ -96,6 +96,7 @@ struct ReuseOptions {
   struct Technique {
     const char* name;
     bool ReuseOptions::*on;
+    const char* what;  //!< one line for --help and the docs
   };
   //! Every technique, in the order names() lists them: the one list that
   //! api::parse_reuse(), names(), any() and none() go through.

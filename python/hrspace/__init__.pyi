@@ -185,8 +185,9 @@ def design(
     *,
     seed: int = 1,
     iterations: int = 700,
-    planner: str = "baseline",
+    planner: str = "default",
     reuse: Optional[str] = None,
+    disable: Optional[str] = None,
     threads: int = 0,
     progress: Optional[Callable[[Dict[str, Any]], None]] = None,
 ) -> Design:

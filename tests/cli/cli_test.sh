@@ -80,7 +80,7 @@ check "plan proposed" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --pla
 grep -q '"found": *true' "$tmp/out" || { echo "FAIL: plan proposed found no path"; fails=$((fails + 1)); }
 check "plan proposed samples only" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse samples
 check "plan reuse without proposed" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --reuse samples
-expect_err "reuse needs proposed" "--reuse needs --planner proposed"
+expect_err "reuse needs proposed" "--reuse needs --planner default"
 check "plan reuse across layouts" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse paths
 expect_err "plan rejects paths" "--reuse: 'paths'"
 check "plan unknown planner" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner fast
@@ -154,6 +154,19 @@ sed 's/\[4.5, 0\], \[4.5, 4.0\], \[0, 4.0\]/[1500, 0], [1500, 4.0], [0, 4.0]/' "
 grep -q 1500 "$tmp/km.json" || { echo "FAIL: km.json not made"; fails=$((fails+1)); }
 check "LateChecksComeFirst room beyond 1 km" 2 "$bin" validate "$tmp/km.json"
 expect_err "LateChecksComeFirst room pointer" "/room/polygon/1/0: must be within"
+# design --planner: presets and items, refused before any work with one line.
+check "design unknown preset" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner fast
+expect_err "design unknown preset named" "--planner: unknown planner preset 'fast' (default, baseline, paper, literal)"
+check "design technique on the RRT" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner baseline,trees
+expect_err "design technique on the RRT named" "'trees': the baseline preset plans each leg with the RRT"
+check "design preset with items" 0 "$bin" design "$bed" --out "$tmp/dp" --iterations 2 --planner literal,goalskip
+grep -q '"planner": "literal,goalskip"' "$tmp/dp/report.json" || { echo "FAIL: report.json planner name"; fails=$((fails+1)); }
+check "design default preset" 0 "$bin" design "$bed" --out "$tmp/dd" --iterations 2
+grep -q '"planner": "default"' "$tmp/dd/report.json" || { echo "FAIL: default planner not in report.json"; fails=$((fails+1)); }
+"$bin" design --help >"$tmp/help"
+for p in default baseline paper literal goalskip refuse escape early samples steering paths trees; do
+  grep -q "^    $p " "$tmp/help" || { echo "FAIL: design --help lacks $p"; fails=$((fails+1)); }
+done
 # StdoutWriteErrorsAreExitOne: every subcommand checks its output.
 if [ -w /dev/full ]; then
   for cmd in "validate $bed" "collide $bed --poses $tmp/poses.csv" "rs --radius 0.7 --pairs $tmp/pairs.csv" \

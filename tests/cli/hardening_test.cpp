@@ -205,6 +205,7 @@ TEST(Hardening, LongLoopsHonourAStopRequest) {
   EXPECT_THROW(hrs::planning::local_goal_poses(scene, scene.objects[0], {}, &stop),
                hrs::Interrupted);
   hrs::optimize::DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.iterations = 5;
   EXPECT_THROW(hrs::optimize::design(scene, options, &stop), hrs::Interrupted);
 

@@ -158,6 +158,7 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
 TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
   const Scene scene = geometry::load_scene(kBedroom);
   DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.seed = 1;  // a seed whose 25 iterations reach found tours, so they are checked
   options.iterations = 25;
   options.threads = 2;
@@ -186,6 +187,7 @@ TEST(Design, SameSeedGivesByteIdenticalFilesWithOneAndTwoThreads) {
   std::string layout[2], tours[2];
   for (int t = 0; t < 2; ++t) {
     DesignOptions options;
+    options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
     options.seed = 11;
     options.iterations = 6;
     options.threads = t + 1;
@@ -207,6 +209,7 @@ TEST(Design, InvalidStartingLayoutIsSeparatedOrReportedInvalid) {
                               0.0};
   ASSERT_FALSE(layout_violation(scene).empty());
   DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.iterations = 40;
   const auto r = design(scene, options);
   EXPECT_EQ(r.valid, layout_violation(r.layout).empty());
@@ -216,6 +219,7 @@ TEST(Design, StopFlagEndsTheRunAndKeepsTheBest) {
   const Scene scene = geometry::load_scene(kBedroom);
   std::atomic<bool> stop{false};
   DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.iterations = 100;
   int calls = 0;
   const auto r = design(scene, options, &stop, [&](const DesignStep&) {

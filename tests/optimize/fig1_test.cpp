@@ -39,6 +39,7 @@ TEST(Fig1, PathCostsMakeMoreToursFeasibleThanInteriorCostsAlone) {
       geometry::Scene scene = bedroom;
       if (!with_path) scene.weights.path = {0.0, 0.0, 0.0};
       DesignOptions options;
+      options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
       options.seed = seed;
       options.iterations = iterations;
       const auto r = design(scene, options);

@@ -28,8 +28,8 @@ DesignResult run(const geometry::Scene& s, bool proposed, const std::string& reu
   o.seed = 3;
   o.iterations = iterations;
   o.threads = threads;
-  o.proposed = proposed;
-  o.reuse = api::parse_reuse(reuse);
+  o.planner = hrs::optimize::PlannerConfig::from_preset(proposed ? "default" : "baseline");
+  if (proposed) o.planner.reuse = api::parse_reuse(reuse);
   return design(s, o);
 }
 
