@@ -445,14 +445,16 @@ void run_on_threads(int jobs, const std::function<void()>& work) {
 RunnerReport run_study(const Study& study, const StudyConfig& config,
                        const RunnerOptions& options) {
   const fs::path study_dir = config.out / study.name;
-  prepare_study_dir(study_dir);
   const std::vector<RunSpec> all = study.runs(config);
   const std::vector<RunSpec> mine = select_shard(all, options.shard_index, options.shard_count);
   RunnerReport report;
   report.total = static_cast<int>(all.size());
   report.in_shard = static_cast<int>(mine.size());
+  // The stored runs are checked before anything is written: a refused
+  // command leaves DIR as it was.
   const std::vector<Pending> todo =
       runs_not_stored(study, config, study_dir, all, mine, report.skipped);
+  prepare_study_dir(study_dir);
 
   Recordings recordings(config.out / "recordings");
   const ProgressBar progress(options.progress, study.name, static_cast<int>(todo.size()));
@@ -584,9 +586,7 @@ int merge_shards(const Study& study, const StudyConfig& config,
                  const std::vector<fs::path>& shard_roots) {
   const fs::path study_dir = config.out / study.name;
   std::error_code ec;
-  fs::create_directories(study_dir / "runs", ec);
-  if (ec) throw OutputError(study_dir.string() + ": cannot create directory: " + ec.message());
-  // Check everything before copying anything: the runs already merged here
+  // Check everything before writing anything: the runs already merged here
   // and every shard's.
   std::vector<StoredRun> all = stored_runs(study_dir / "runs");
   std::vector<fs::path> shard_runs;
@@ -600,6 +600,8 @@ int merge_shards(const Study& study, const StudyConfig& config,
     for (StoredRun& r : stored_runs(runs)) all.push_back(std::move(r));
   }
   check_one_sweep(all);
+  fs::create_directories(study_dir / "runs", ec);
+  if (ec) throw OutputError(study_dir.string() + ": cannot create directory: " + ec.message());
   // The same run in two places must be the same run.
   std::map<std::string, const StoredRun*> by_key;
   for (const StoredRun& r : all) {
