@@ -192,12 +192,20 @@ Study shared::timing_study() {
 }
 
 Study shared::rs_decomposition_study() {
-  return {"rs_decomposition",
+  Study s{"rs_decomposition",
           "§V-A's -40 %, Fig. \"partition\", the 48 regions",
           "RS-decomposition: regions and word accuracy; samples+steering vs baseline on replays",
           rsd_runs,
           rsd_run,
           rsd_summary};
+  // A regions run has no room parameter but sizes its box by the first room.
+  s.identity = [](const RunSpec& spec, const StudyConfig& config) {
+    Row id = shared::run_identity(spec, config);
+    if (param(spec, "kind") == "regions")
+      id.set("scene_digest", shared::scene_digest(config, rooms_of(config, {"bedroom"}).front()));
+    return id;
+  };
+  return s;
 }
 
 Study shared::rrt_iterations_study() {

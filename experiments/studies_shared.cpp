@@ -86,8 +86,34 @@ std::string room_label(const std::string& room) {
 }
 
 geometry::Scene load_room(const StudyConfig& config, const std::string& room) {
-  if (room.ends_with(".json")) return geometry::load_scene(room);
-  return geometry::load_scene((config.scenes_dir / (room + ".json")).string());
+  return geometry::load_scene(scene_path(config, room).string());
+}
+
+std::string scene_digest(const StudyConfig& config, const std::string& room) {
+  const fs::path path = scene_path(config, room);
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError("room '" + room + "': no scene file " + path.string() +
+                     (room.ends_with(".json") ? std::string()
+                                              : " (names are looked up in --scenes " +
+                                                    config.scenes_dir.string() + ")"));
+  return file_digest(path);
+}
+
+Row planner_identity(const StudyConfig& config, const std::string& planner) {
+  const optimize::DesignOptions o = design_options(config, planner, 1);
+  Row id;
+  id.set("planner_reuse", o.proposed ? o.reuse.names() : std::string("baseline"));
+  id.set("planner_literal", o.tour.planner.skip_tried_goal_nodes ? 0L : 1L);
+  return id;
+}
+
+Row run_identity(const RunSpec& spec, const StudyConfig& config) {
+  Row id;
+  if (const auto room = spec.params.get("room"))
+    id.set("scene_digest", scene_digest(config, *room));
+  if (const auto planner = spec.params.get("planner")) id.merge(planner_identity(config, *planner));
+  return id;
 }
 
 std::vector<std::string> rooms_of(const StudyConfig& config, std::vector<std::string> defaults) {
@@ -165,7 +191,9 @@ RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep) 
     scene.weights.path = {0, 0, 0};
   optimize::DesignOptions o = design_options(context.config, planner, seed);
   RunOutput out;
-  const std::string label = room_label(room);
+  // Recordings are keyed by the scene's contents, not only its name: an
+  // edited scene of the same file name records its own layouts.
+  const std::string label = room_label(room) + "-" + scene_digest(context.config, room);
   if (mode == "design") {
     Recordings::Layouts layouts;
     const bool record = planner == "baseline" && !spec.params.get("path_weights");

@@ -20,6 +20,16 @@ namespace hrs::experiments::shared {
 std::string room_label(const std::string& room);
 //! The scene of a room name (looked up in --scenes) or .json path.
 geometry::Scene load_room(const StudyConfig& config, const std::string& room);
+//! The digest of a room's scene file (runner.h file_digest); InputError
+//! naming the room and the path when there is no such file.
+std::string scene_digest(const StudyConfig& config, const std::string& room);
+//! The identity columns of a planner (kPlanners): planner_reuse (the
+//! proposed planner's techniques, "baseline" for the baseline RRT) and
+//! planner_literal (1: tried goal nodes are not skipped).
+Row planner_identity(const StudyConfig& config, const std::string& planner);
+//! Study::identity of most studies: the digest of the run's room
+//! (scene_digest) and its planner's switches, for the parameters it has.
+Row run_identity(const RunSpec& spec, const StudyConfig& config);
 //! The study's rooms: --rooms when given, else its own (the first only with --quick).
 std::vector<std::string> rooms_of(const StudyConfig& config, std::vector<std::string> defaults);
 //! The seeds 1..config.seeds, as parameter values.

@@ -32,7 +32,11 @@ using scene_io::literal;
 using scene_io::num;
 using scene_io::one_line;
 
-constexpr double kRowSumTolerance = 1e-6;  //!< AO rows sum to 1
+constexpr double kRowSumTolerance = 1e-6;  //!< AO rows sum to 1 within this, both ways
+//! Slack for the rounding of decimal probabilities to doubles and of their
+//! sum: without it 0.999999 passed and 1.000001 failed (1.000001 - 1 is
+//! 1.00000000003e-6 in doubles, 1 - 0.999999 is 0.99999999992e-6).
+constexpr double kRowSumRounding = 1e-12;
 
 //! Rectangle [depth, width] centred on the origin, counter-clockwise.
 Polygon centred_rectangle(double depth, double width) {
@@ -337,7 +341,7 @@ class SceneReader : public scene_io::FieldReader {
         out[to] = v;
         sum += v;
       }
-      if (std::abs(sum - 1.0) > kRowSumTolerance) {
+      if (std::abs(sum - 1.0) > kRowSumTolerance + kRowSumRounding) {
         fail(rp, "probabilities must sum to 1 (+-1e-6), got " + num(sum));
       }
     }

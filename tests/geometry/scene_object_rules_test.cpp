@@ -244,6 +244,26 @@ TEST(SceneRules, RowSumToleranceIsOneMillionth) {
   set(j, "/activity/transitions/shelf/plant", 0.3 + 2e-6);
   expect_rejected(j.dump(), "/activity/transitions/shelf", "sum to 1");
 }
+TEST(SceneRules, RowSumToleranceIsTheSameAboveAndBelowOne) {
+  // |sum - 1| <= 1e-6 both ways: a row one millionth over 1 passes like one
+  // a millionth under it (the over side was refused by rounding).
+  for (const double plant : {0.300001, 0.299999, 0.3 + 1e-6, 0.3 - 1e-6}) {
+    Json j = base();
+    set(j, "/activity/transitions/shelf/plant", plant);
+    EXPECT_NO_THROW(parse(j)) << "plant " << plant;
+  }
+  for (const char* row :
+       {R"({"desk": 0.500001, "plant": 0.5})", R"({"desk": 0.499999, "plant": 0.5})"}) {
+    Json j = base();
+    set(j, "/activity/transitions/shelf", Json::parse(row));
+    EXPECT_NO_THROW(parse(j)) << row;
+  }
+  for (const double plant : {0.3000012, 0.2999988}) {
+    Json j = base();
+    set(j, "/activity/transitions/shelf/plant", plant);
+    expect_rejected(j.dump(), "/activity/transitions/shelf", "sum to 1");
+  }
+}
 TEST(SceneRules, PointerEscapesSlashAndTilde) {
   expect_broken(
       [](Json& j) {
