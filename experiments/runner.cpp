@@ -551,7 +551,7 @@ struct ScopedColumn {
   const char* scope;
 };
 constexpr ScopedColumn kScopedColumns[] = {
-    {"scene_digest", "room"}, {"planner_reuse", "planner"}, {"planner_literal", "planner"}};
+    {"scene_digest", "room"}, {"planner_config", "planner"}};
 
 //! Refuses run files that cannot come from one sweep: sweep columns that
 //! differ, scoped identity columns that differ for the same scope value.

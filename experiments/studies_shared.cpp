@@ -103,8 +103,7 @@ std::string scene_digest(const StudyConfig& config, const std::string& room) {
 Row planner_identity(const StudyConfig& config, const std::string& planner) {
   const optimize::DesignOptions o = design_options(config, planner, 1);
   Row id;
-  id.set("planner_reuse", o.proposed ? o.reuse.names() : std::string("baseline"));
-  id.set("planner_literal", o.tour.planner.skip_tried_goal_nodes ? 0L : 1L);
+  id.set("planner_config", o.planner.name());
   return id;
 }
 

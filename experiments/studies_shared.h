@@ -23,9 +23,8 @@ geometry::Scene load_room(const StudyConfig& config, const std::string& room);
 //! The digest of a room's scene file (runner.h file_digest); InputError
 //! naming the room and the path when there is no such file.
 std::string scene_digest(const StudyConfig& config, const std::string& room);
-//! The identity columns of a planner (kPlanners): planner_reuse (the
-//! proposed planner's techniques, "baseline" for the baseline RRT) and
-//! planner_literal (1: tried goal nodes are not skipped).
+//! The identity column of a planner (kPlanners): planner_config, the
+//! planner configuration it stands for (optimize::PlannerConfig::name()).
 Row planner_identity(const StudyConfig& config, const std::string& planner);
 //! Study::identity of most studies: the digest of the run's room
 //! (scene_digest) and its planner's switches, for the parameters it has.

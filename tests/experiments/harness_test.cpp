@@ -576,7 +576,7 @@ TEST(Identity, EveryRunOfTheShippedStudiesDigestsTheScenesItReads) {
       const Row id = run_identity(s, r, config);
       for (const std::string& c : sweep_columns()) EXPECT_TRUE(id.get(c)) << r.key << " " << c;
       EXPECT_TRUE(id.get("scene_digest")) << r.key;
-      if (r.params.get("planner")) EXPECT_TRUE(id.get("planner_reuse")) << r.key;
+      if (r.params.get("planner")) EXPECT_TRUE(id.get("planner_config")) << r.key;
     }
   }
   // Scene names are looked up in --scenes: a directory without them is an

@@ -46,8 +46,7 @@ expect "other --threads refused" 2 "threads" \
 /usr/bin/python3 - E/timing/runs.csv <<'PY' || fail "runs.csv lacks identity columns"
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1], newline="")))
-need = ["version", "commit", "iterations", "threads", "quick", "scene_digest", "planner_reuse",
-        "planner_literal"]
+need = ["version", "commit", "iterations", "threads", "quick", "scene_digest", "planner_config"]
 bad = [f"{r['key']}: {c}" for r in rows for c in need if not r.get(c)]
 bad += [f"{r['key']}: iterations {r['iterations']}" for r in rows if r.get("iterations") != "2"]
 print("\n".join(bad) if bad else f"runs.csv: {len(rows)} rows with identity columns")
