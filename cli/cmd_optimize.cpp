@@ -169,9 +169,10 @@ std::function<void(const optimize::DesignStep&)> progress_bar(bool tty, long ite
 //! One line per design on stdout.
 void print_summary(const std::filesystem::path& dir, const optimize::DesignResult& result) {
   std::printf(
-      "%s: cost %.4f -> %.4f, tours found %d/%d, acceptance %.2f, %.1f s (planning %.0f%%)%s%s\n",
+      "%s: cost %.4f -> %.4f, tours found %d/%d, preferences met %d/%d, acceptance %.2f, %.1f s "
+      "(planning %.0f%%)%s%s\n",
       dir.string().c_str(), result.initial.total(), result.final.total(), result.final.tours_found,
-      result.final.tours_total,
+      result.final.tours_total, result.preferences.met, result.preferences.total,
       result.proposals ? static_cast<double>(result.accepted) / result.proposals : 0.0,
       result.time_total_s,
       result.time_total_s > 0 ? 100.0 * result.time_planning_s / result.time_total_s : 0.0,

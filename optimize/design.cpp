@@ -14,6 +14,7 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "optimize/polish.h"
 #include "optimize/tour_round.h"
 #include "planning/motion_validator.h"
 
@@ -97,6 +98,8 @@ class DesignRun {
       poses_.push_back(o.pose);
       movable_.push_back(!o.fixed);
     }
+    poses_initial_ = poses_;
+    model_.set_bounded_preferences(options.planner.prefer);
     // With all path weights 0 the cost does not depend on the tours: plan
     // only the initial and the best layout (Fig. 1's "designed without the
     // chair").
@@ -173,7 +176,20 @@ class DesignRun {
     cb.new_best = [this] { new_best(); };
     cb.progress = [this](const TraceEntry& e) { step_done(e); };
     cb.focus = [this] { return focus_current_; };
+    if (options_.planner.prefer)
+      cb.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+        return preferred_move(p, o, rng);
+      };
     return cb;
+  }
+
+  //! A preference move (AnnealCallbacks::preferred): one of the object's
+  //! preferred poses or a wall slot, uniformly.
+  std::optional<Pose2> preferred_move(const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+    std::vector<Pose2> c = preferred_poses(work_, model_, p, o);
+    if (const auto slot = wall_slot(work_, o, rng)) c.push_back(*slot);
+    if (c.empty()) return std::nullopt;
+    return c[uniform_index(rng, c.size())];
   }
 
   //! The exact checks of one moved object, before any planning.
@@ -506,6 +522,40 @@ class DesignRun {
     if (progress_) progress_(step);
   }
 
+  //! The final polish (optimize/polish.h) of the best layout, written into
+  //! result_.layout, result_.final and result_.tours.
+  void polish_best(const AnnealResult& r) {
+    std::vector<Pose2> poses = r.best;
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      if (cspace_.object_pose(static_cast<int>(i)) != poses[i]) place(static_cast<int>(i), poses[i]);
+    poses_ = poses;
+    CostTerms terms = result_.final;
+    if (!plan_every_iteration_) {
+      iteration_ = r.proposals + 1;
+      plan_current();
+      terms = model_.evaluate(poses, tours_, &round_.blockage());
+      result_.tours = tours_;
+      result_.final = terms;
+    }
+    PolishHooks hooks;
+    hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
+    hooks.try_pose = [this](const std::vector<Pose2>& p, int o, const Pose2& to) {
+      place(o, to);
+      ++iteration_;
+      plan_current();
+      return model_.evaluate(p, tours_, &round_.blockage());
+    };
+    hooks.undo = [this](int o, const Pose2& to) { place(o, to); };
+    hooks.kept = [this] { result_.tours = tours_; };
+    const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
+    const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
+    result_.polish = {pr.tried, pr.kept};
+    if (pr.kept == 0) return;
+    for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
+    result_.final = terms;
+    result_.valid = layout_violation(result_.layout).empty();
+  }
+
   //! The best layout, its tours (toured now when the tours were not planned
   //! every iteration) and the run's counts.
   void finish(const AnnealResult& r) {
@@ -520,7 +570,9 @@ class DesignRun {
       result_.final = current_terms_;
       result_.tours = current_tours_;
     }
-    if (!plan_every_iteration_ && r.best_valid) {
+    const bool polished = options_.planner.prefer && r.best_valid && !(stop_ && stop_->load());
+    if (polished) polish_best(r);
+    if (!plan_every_iteration_ && r.best_valid && !polished) {
       for (std::size_t i = 0; i < scene_.objects.size(); ++i)
         cspace_.move_object(static_cast<int>(i), r.best[i]);
       iteration_ = r.proposals + 1;
@@ -534,6 +586,10 @@ class DesignRun {
     result_.stopped = r.stopped;
     result_.proposed = options_.planner.proposed;
     result_.planner = options_.planner.name();
+    result_.preferences_initial = check_preferences(scene_, model_, poses_initial_);
+    std::vector<Pose2> best;
+    for (const auto& o : result_.layout.objects) best.push_back(o.pose);
+    result_.preferences = check_preferences(scene_, model_, best);
     result_.gate_fills = round_.gate().fills();
     result_.gate_ms = round_.gate().fill_ms();
     if (result_.tours_planned > 0)
@@ -558,6 +614,7 @@ class DesignRun {
   geometry::CSpace& cspace_;
   std::vector<planning::Tour>& tours_;
   std::vector<Pose2> poses_;
+  std::vector<Pose2> poses_initial_;  //!< the input layout's
   std::vector<bool> movable_;
   std::vector<int> focus_current_;  //!< walling_objects() of the current layout
   std::vector<int> open_stops_;     //!< stops with a free goal pose in the current layout

@@ -33,6 +33,7 @@
 #include "optimize/annealer.h"
 #include "optimize/costs.h"
 #include "optimize/planner_config.h"
+#include "optimize/preferences.h"
 #include "optimize/sequences.h"
 #include "planning/reach_gate.h"
 #include "planning/recheck.h"
@@ -78,6 +79,9 @@ struct DesignResult {
   std::vector<Sequence> sequences;    //!< the M sequences, most likely first
   std::vector<planning::Tour> tours;  //!< tours of the best layout (tours[k] ↔ sequences[k])
   CostTerms initial;                  //!< of the input layout
+  //! The scene's preferences met by the input and by the best layout
+  //! (optimize/preferences.h, default tolerances).
+  PreferenceReport preferences_initial, preferences;
   CostTerms final;                    //!< of the best layout
   bool valid = false;                 //!< the best layout passed every exact check
   int proposals = 0, valid_proposals = 0, accepted = 0;
@@ -111,6 +115,10 @@ struct DesignResult {
   //! Moves refused because they would leave a stop without any free goal
   //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.
   int covering_moves = 0;
+  //! The final polish (optimize/polish.h): poses planned and kept.
+  struct Polish {
+    int tried = 0, kept = 0;
+  } polish;
   long legs_refused = 0;     //!< legs the free grid proved impossible
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
   double gate_ms = 0.0;          //!< their total time

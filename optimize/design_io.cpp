@@ -2,6 +2,7 @@
 // and writing them so that no failure leaves a truncated file behind.
 
 #include "optimize/design_io.h"
+#include "optimize/preferences_json.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -256,10 +257,14 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"proposals", result.unblock.proposals},
             {"accepted", result.unblock.accepted}}},
           {"covering_moves", result.covering_moves},
+          {"polish", {{"tried", result.polish.tried}, {"kept", result.polish.kept}}},
           {"refused_legs",
            {{"legs", result.legs_refused},
             {"reachability_fills", result.gate_fills},
             {"reachability_ms", result.gate_ms}}},
+          {"preferences", preferences_json(result.preferences)},
+          {"preferences_initial",
+           {{"met", result.preferences_initial.met}, {"total", result.preferences_initial.total}}},
           {"cost",
            {{"initial", result.initial.total()},
             {"final", result.final.total()},

@@ -17,7 +17,7 @@ PlannerConfig literal_config() {
   c.preset = "literal";
   c.proposed = false;
   c.reuse = ReuseOptions::none();
-  c.goalskip = c.refuse = c.escape = c.early = false;
+  c.goalskip = c.refuse = c.escape = c.early = c.prefer = false;
   return c;
 }
 
@@ -59,7 +59,7 @@ const std::array<PlannerConfig::Preset, 4>& PlannerConfig::presets() {
   static const std::array<Preset, 4> list{{
       {"default",
        "the proposed planner with every technique that pays, and the design loop's "
-       "additions (refuse, escape, early, goalskip)"},
+       "additions (goalskip, refuse, escape, early, prefer)"},
       {"baseline", "RRT per leg (§III-B) with the design loop's additions"},
       {"paper",
        "the paper's proposed planner (§V): samples, steering, paths, trees; none of our "
@@ -82,8 +82,8 @@ PlannerConfig PlannerConfig::from_preset(std::string_view name, std::string_view
                    known + ")");
 }
 
-const std::array<PlannerConfig::Switch, 4>& PlannerConfig::switches() {
-  static const std::array<Switch, 4> list{{
+const std::array<PlannerConfig::Switch, 5>& PlannerConfig::switches() {
+  static const std::array<Switch, 5> list{{
       {"goalskip", &PlannerConfig::goalskip,
        "an RRT does not steer to the goal again from a node it already tried"},
       {"refuse", &PlannerConfig::refuse,
@@ -94,6 +94,9 @@ const std::array<PlannerConfig::Switch, 4>& PlannerConfig::switches() {
        "first; no move leaves a stop without a free goal pose"},
       {"early", &PlannerConfig::early,
        "a proposal stops being planned once a lower bound of its cost is rejected"},
+      {"prefer", &PlannerConfig::prefer,
+       "preference terms bounded and scaled to their tolerances, preference moves, and a "
+       "final polish that keeps every found tour"},
   }};
   return list;
 }

@@ -11,7 +11,8 @@
 //
 // Four presets name the planners that people compare:
 //   literal   the paper's baseline read literally: RRT per leg, tried goal
-//             nodes tried again, none of our additions;
+//             nodes tried again, the paper's interior cost and moves, none
+//             of our additions;
 //   paper     the paper's proposed planner: its four techniques
 //             (RS-decomposition samples and steering, path database, tree
 //             reuse) and nothing of ours;
@@ -48,6 +49,13 @@ struct PlannerConfig {
   //! Ours: a proposal stops being planned once a lower bound of its cost is
   //! rejected by the Metropolis draw (the same decisions).
   bool early = true;
+  //! Ours: preferences as a designer reads them (optimize/preferences.h):
+  //! each interior term is bounded and scaled to its tolerance, the annealer
+  //! also proposes preference moves (against a wall, a wall slot, aligned
+  //! with a relation partner), and a final polish moves each object to a
+  //! pose that meets its preferences wherever every found tour stays found.
+  //! Off: the paper's squared interior terms and moves.
+  bool prefer = true;
 
   //! A named starting point.
   struct Preset {
@@ -65,7 +73,7 @@ struct PlannerConfig {
     bool PlannerConfig::*on;
     const char* what;
   };
-  static const std::array<Switch, 4>& switches();
+  static const std::array<Switch, 5>& switches();
 
   //! The shortest text that parses back to this configuration: the preset,
   //! then every switch and technique that differs from it.

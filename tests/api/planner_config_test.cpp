@@ -36,21 +36,23 @@ void expect_same(const PlannerConfig& a, const PlannerConfig& b, const std::stri
 TEST(PlannerConfig, PresetsSayWhatTheyContain) {
   const PlannerConfig literal = parse_planner("literal");
   EXPECT_FALSE(literal.proposed);
-  EXPECT_FALSE(literal.goalskip || literal.refuse || literal.escape || literal.early);
+  EXPECT_FALSE(literal.goalskip || literal.refuse || literal.escape || literal.early ||
+               literal.prefer);
 
   const PlannerConfig paper = parse_planner("paper");
   EXPECT_TRUE(paper.proposed);
   EXPECT_EQ(paper.reuse.names(), "samples,steering,paths,trees");
-  EXPECT_FALSE(paper.goalskip || paper.refuse || paper.escape || paper.early);
+  EXPECT_FALSE(paper.goalskip || paper.refuse || paper.escape || paper.early || paper.prefer);
 
   const PlannerConfig baseline = parse_planner("baseline");
   EXPECT_FALSE(baseline.proposed);
-  EXPECT_TRUE(baseline.goalskip && baseline.refuse && baseline.escape && baseline.early);
+  EXPECT_TRUE(baseline.goalskip && baseline.refuse && baseline.escape && baseline.early &&
+              baseline.prefer);
 
   const PlannerConfig d = parse_planner("default");
   EXPECT_TRUE(d.proposed);
   EXPECT_EQ(d.reuse.names(), parse_reuse("all").names());
-  EXPECT_TRUE(d.goalskip && d.refuse && d.escape && d.early);
+  EXPECT_TRUE(d.goalskip && d.refuse && d.escape && d.early && d.prefer);
   // The library's default is the command's default.
   expect_same(PlannerConfig{}, d, "PlannerConfig{}");
   expect_same(parse_planner("proposed"), d, "proposed alias");
