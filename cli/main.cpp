@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace: the command-line entry point. Dispatches to the subcommands of
 // docs/design-notes.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The design runner behind `hrspace design` (paper §III, Fig. 2): simulated
 // annealing over the furniture poses (§III-E) where every evaluated layout is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The output files of `hrspace design` (optimize/design_io.h): their texts,
 // and writing them so that no failure leaves a truncated file behind.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace._core: the extension behind `import hrspace` (docs/python.md).
 // Errors: hrs::InputError becomes ValueError with the command line's
 // one-line message, hrs::OutputError becomes OSError.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design outputs checked independently of the annealer: the written layout
 // is a valid scene with every object inside the room, no overlaps, the door
 // zone free, fixed objects and all sizes unchanged, and every tour of
