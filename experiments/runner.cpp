@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "geometry/error.h"
+#include "geometry/version.h"
 
 namespace hrs::experiments {
 
@@ -137,6 +138,7 @@ Row environment_cells(int threads) {
   }();
   static const std::string cpu = cpu_model();
   Row r;
+  r.set("version", std::string(hrs::version()));
   r.set("commit", commit);
   r.set("cpu", cpu);
   r.set("threads", threads);
@@ -149,7 +151,7 @@ bool is_timing_column(const std::string& name) {
 }
 
 bool is_environment_column(const std::string& name) {
-  return name == "commit" || name == "cpu" || name == "cores";
+  return name == "version" || name == "commit" || name == "cpu" || name == "cores";
 }
 
 // --- running ----------------------------------------------------------------

@@ -133,11 +133,12 @@ std::vector<std::string> degree_like_angles(const Scene& scene, const std::strin
   std::vector<std::string> out;
   const auto check = [&](double angle, const std::string& ptr) {
     if (!(std::abs(angle) > 2.0 * std::numbers::pi)) return;
-    char degrees[32];
-    std::snprintf(degrees, sizeof degrees, "%.5g", angle * std::numbers::pi / 180.0);
-    out.push_back(scene_io::one_line(label + ": " + ptr + ": angle " + scene_io::num(angle) +
+    char given[32], radians[32];
+    std::snprintf(given, sizeof given, "%.10g", angle);
+    std::snprintf(radians, sizeof radians, "%.5g", angle * std::numbers::pi / 180.0);
+    out.push_back(scene_io::one_line(label + ": " + ptr + ": angle " + given +
                                      " is larger than 2π in magnitude: radians are expected (" +
-                                     scene_io::num(angle) + "° would be " + degrees + ")"));
+                                     given + "° would be " + radians + ")"));
   };
   if (scene.door.start) check(scene.door.start->theta, "/door/start/2");
   for (std::size_t i = 0; i < scene.objects.size(); ++i) {
