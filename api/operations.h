@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The operations behind `hrspace plan`, `hrspace tour` and `hrspace design`
 // as plain functions: the command line (cli/) and the Python module

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The --reuse list syntax: text naming the proposed planner's techniques
 // (planning::ReuseOptions) as the command line, the Python module, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmarks of optimize/: one full bedroom design (paper §VI: 700
 // iterations, M = 10; the paper reports 3–5 min per design with planning
 // 96 % of it) and the per-iteration pieces that are not planning.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Baseline vs proposed planner on the same planning problems (paper §V-VI).
 // A design run's planners visit different layouts (a reused path has another
 // length than a fresh one, so costs and Metropolis decisions differ), which

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Baseline vs proposed planner (paper §VI, Fig. "time"): designs of several
 // rooms from the same seeds, planning time, total time and final cost per
 // design, plus an ablation of each reuse technique alone (§V). Not a Google

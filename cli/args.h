@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Minimal command-line parsing for the hrspace subcommands: positional
 // arguments, `--name value` options and `--flag` switches, each declared up

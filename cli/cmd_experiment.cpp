@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace experiment`: the experiments harness on the command line
 // (experiments/study.h): one study, every study, or a merge of shard outputs.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace design`: the layout optimizer of paper §III (optimize/design.h)
 // with its outputs (optimize/design_io.h), a progress bar on a terminal and
 // Ctrl-C, SIGTERM or SIGHUP writing the best design so far (exit 128 + the
@@ -212,6 +213,8 @@ geometry::Scene prepare_design(const DesignRequest& r, const Args& args) {
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
   geometry::require_sequences(scene, path == "-" ? "stdin" : path);
+  for (const std::string& w : geometry::degree_like_angles(scene, path == "-" ? "stdin" : path))
+    std::cerr << "hrspace design: warning: " << w << "\n";
   // The output directory before any work: an unwritable --out loses nothing.
   optimize::require_writable_directory(r.out);
   remove_stale_outputs(r.out, r.designs > 1, r.designs,

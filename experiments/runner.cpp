@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "experiments/runner.h"
 
 #include <unistd.h>
@@ -18,6 +19,7 @@
 #include <thread>
 
 #include "geometry/error.h"
+#include "geometry/version.h"
 
 namespace hrs::experiments {
 
@@ -144,11 +146,7 @@ const std::string& code_commit() {
 }
 
 const std::string& code_version() {
-#ifdef HRSPACE_VERSION
-  static const std::string version = HRSPACE_VERSION;
-#else
-  static const std::string version = "unknown";
-#endif
+  static const std::string version = hrs::version();
   return version;
 }
 
@@ -194,7 +192,7 @@ bool is_timing_column(const std::string& name) {
 }
 
 bool is_environment_column(const std::string& name) {
-  return name == "commit" || name == "cpu" || name == "cores";
+  return name == "version" || name == "commit" || name == "cpu" || name == "cores";
 }
 
 // --- running ----------------------------------------------------------------

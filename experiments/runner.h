@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The experiments runner: executes a study's runs (resumable, parallel,
 // sharded), stores each run as it finishes and writes the study's tables.

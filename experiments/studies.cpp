@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studies of the paper's §VI (and its method figures), in the order
 // `scripts/reproduce.sh` runs them. Each is defined, as a run list, a run and
 // a summary, in the file of its kind: studies_planners.cpp (planner speed),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studies of what the designs look like: small_room (§VI-B), ao_graph
 // (§VI-C), designs (Fig. "cover3", Fig. 1), and beyond the paper hard_rooms
 // and design_loop. docs/experiments.md says what each measures.

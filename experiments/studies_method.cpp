@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The method study: the figures of the method rather than of a result, the
 // AO graphs (Fig. "actiongraph") and the goal poses and one leg of a designed
 // layout (Fig. "goal").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studies of how fast the planners are: timing (§VI-A, Fig. "time"),
 // rs_decomposition (§V-A, Fig. "partition") and rrt_iterations (§V-C,
 // Fig. "rrt-it"). docs/experiments.md says what each measures.

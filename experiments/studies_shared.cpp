@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the studies share (experiments/studies_shared.h): the planners they
 // compare, rooms, run keys and parameters, and the design or replay run that
 // most studies make.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Internal to experiments/studies*.cpp, not part of the API: what the studies
 // share (the planners they compare, run keys and parameters, the design or

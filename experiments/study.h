@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A study of the experiments harness: one experiment of the paper's §VI (or
 // one of its figures), defined as a list of runs, each a pure function of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tables of the experiments harness: rows of named cells, written and read as
 // CSV (RFC 4180 quoting), and files replaced atomically so that a killed run

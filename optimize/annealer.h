@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Simulated annealing over object poses (paper §III-E): Metropolis acceptance
 // min(1, exp(−ΔC/t)) under geometric cooling; a move translates one movable

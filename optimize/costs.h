@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The cost of a layout (paper §III-D, docs/design-notes.md "Costs"):
 //   C_total = Σ_s L̂(s) · Σ_legs α̂_end · (w_l·length + w_r·rotation + w_c·clearance)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "optimize/design.h"
 
 #include <algorithm>
@@ -37,15 +38,19 @@ std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
 }
 
 std::string object_violation(const geometry::Scene& scene, int index) {
+  // Contact is allowed within geometry::kContactTolerance, as in the reader.
   const auto& o = scene.objects[index];
   const auto fp = geometry::world_footprint(o);
-  if (!geometry::polygon_inside(fp, scene.room.polygon)) return o.id + " is not inside the room";
-  if (geometry::interiors_overlap(fp, geometry::door_clear_zone(scene)))
-    return o.id + " enters the door's clear zone";
+  if (const auto out = geometry::protrusion(fp, scene.room.polygon))
+    return o.id + " " + geometry::sticks_out_text(*out, scene.room.polygon);
+  if (const auto depth = geometry::overlap_depth(fp, geometry::door_clear_zone(scene)))
+    return o.id + " enters the door's clear zone by " + geometry::metres_text(*depth) + " m";
   for (std::size_t j = 0; j < scene.objects.size(); ++j) {
     if (static_cast<int>(j) == index) continue;
-    if (geometry::interiors_overlap(fp, geometry::world_footprint(scene.objects[j])))
-      return o.id + " overlaps " + scene.objects[j].id;
+    if (const auto depth =
+            geometry::overlap_depth(fp, geometry::world_footprint(scene.objects[j])))
+      return o.id + " overlaps " + scene.objects[j].id + " by " + geometry::metres_text(*depth) +
+             " m";
   }
   return "";
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The design runner behind `hrspace design` (paper §III, Fig. 2): simulated
 // annealing over the furniture poses (§III-E) where every evaluated layout is
@@ -129,7 +130,8 @@ struct DesignResult {
 };
 
 //! Why a layout is not valid, or "" when it is: every object inside the room,
-//! no two objects overlapping, the door's clear zone free (exact predicates).
+//! no two objects overlapping, the door's clear zone free (exact predicates,
+//! contact allowed within geometry::kContactTolerance, as in the reader).
 std::string layout_violation(const geometry::Scene& scene);
 //! The same for object `index` only, against the room, door zone and others.
 std::string object_violation(const geometry::Scene& scene, int index);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The output files of `hrspace design` (optimize/design_io.h): their texts,
 // and writing them so that no failure leaves a truncated file behind.
 
@@ -17,6 +18,7 @@
 #include <sstream>
 
 #include "geometry/error.h"
+#include "geometry/version.h"
 #include "planning/tour_json.h"
 
 namespace hrs::optimize {
@@ -236,6 +238,8 @@ json sequences_json(const DesignResult& result) {
 //! proposals fared, what was planned or skipped, costs, time and trace.
 json run_report_json(const DesignResult& result, const RunInfo& info) {
   return {{"scene", result.layout.name},
+          {"version", hrs::version()},
+          {"commit", hrs::commit()},
           {"seed", info.seed},
           {"planner", info.planner},
           {"iterations", info.iterations},

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One planning round of a design run; see tour_round.h.
 
 #include "optimize/tour_round.h"

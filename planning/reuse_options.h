@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The proposed planner's switches (paper §V and our additions): which reuse
 // techniques are on and their parameters, and their names (names(), which

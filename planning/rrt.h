@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The leg planner: RRT with Reeds–Shepp steering, the paper's baseline
 // (§III-B, after LaValle 1998 and Dolgov et al. 2008). Each iteration draws a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace.design and hrspace.Design: the layout optimizer of `hrspace design`
 // (optimize::design with api::design_options), its results as Python
 // objects and save() writing the command's four files through the same

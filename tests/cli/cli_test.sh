@@ -42,6 +42,15 @@ sed 's/"width": 0.9/"width": -0.9/' "$src/scenes/bedroom.json" >"$tmp/neg.json"
 check "validate negative door width" 2 "$bin" validate "$tmp/neg.json"
 expect_err "negative width names the pointer" "/door/width"
 check "validate without a scene" 2 "$bin" validate
+# An angle larger than 2π is legal but looks like degrees: a warning, exit 0.
+sed 's/"pose": \[3.4, 1.8, 0.0\]/"pose": [3.4, 1.8, 360]/' "$src/scenes/office.json" >"$tmp/deg.json"
+check "validate heading in degrees" 0 "$bin" validate "$tmp/deg.json"
+expect_err "degrees warning" "warning: .*deg.json: /objects/1/pose/2: angle 360 is larger than 2π"
+# Furniture 0.01 m past a wall: refused, naming the wall and the amount.
+sed 's/"pose": \[4.815, 3.0, 3.141592653589793\]/"pose": [4.835, 3.0, 3.141592653589793]/' \
+  "$src/scenes/office.json" >"$tmp/out.json"
+check "validate past the wall" 2 "$bin" validate "$tmp/out.json"
+expect_err "past the wall message" '/objects/2/pose: the footprint of "bookshelf" sticks out 0.01 m past the wall from (5,0) to (5,4)'
 check "unknown command" 2 "$bin" frobnicate
 check "unknown option" 2 "$bin" collide "$src/scenes/bedroom.json" --posse x
 check "help" 0 "$bin" --help

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile inputs, one test per class of issue 20 (docs/hardening.md): every
 // bad scene is refused with one line "FILE: /pointer: what" (InputError),
 // never a crash, and the inner loops that used to blow up on small inputs

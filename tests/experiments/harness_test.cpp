@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The experiments harness (experiments/): CSV tables, aggregation against
 // hand-computed values, shard selection, and the runner's resume and
 // shard/merge behaviour on a small synthetic study whose runs are pure

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The design loop's additions beyond the paper (optimize/design.h,
 // docs/optimize.md), each against the run without it:
 // - early rejection (DesignOptions::early_reject) makes the same accept

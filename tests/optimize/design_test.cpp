@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design outputs checked independently of the annealer: the written layout
 // is a valid scene with every object inside the room, no overlaps, the door
 // zone free, fixed objects and all sizes unchanged, and every tour of
@@ -96,10 +97,12 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
       EXPECT_EQ(o.pose, in.pose) << "fixed object " << o.id << " moved";
     }
     const Polygon fp = geometry::world_footprint(o);
-    EXPECT_TRUE(geometry::polygon_inside(fp, out.room.polygon)) << o.id << " outside the room";
-    EXPECT_FALSE(geometry::interiors_overlap(fp, zone)) << o.id << " in the door zone";
+    // Contact within geometry::kContactTolerance is valid (as in the reader).
+    EXPECT_TRUE(geometry::inside_with_contact(fp, out.room.polygon)) << o.id << " outside the room";
+    EXPECT_FALSE(geometry::overlap_beyond_contact(fp, zone)) << o.id << " in the door zone";
     for (std::size_t j = i + 1; j < out.objects.size(); ++j)
-      EXPECT_FALSE(geometry::interiors_overlap(fp, geometry::world_footprint(out.objects[j])))
+      EXPECT_FALSE(
+          geometry::overlap_beyond_contact(fp, geometry::world_footprint(out.objects[j])))
           << o.id << " overlaps " << out.objects[j].id;
   }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The point of the paper's Fig. 1: a bedroom designed without the wheelchair
 // (path weights 0) leaves objects the chair cannot reach; designed with the
 // path costs (default weights) it can tour more of the M sequences. Each final

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Designs with the proposed planner (paper §V, planning/reuse.h): with every
 // reuse technique off it is the baseline exactly; with all on, the same seed
 // gives the same layout and tours for 1 and 2 threads, every found tour is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Goal poses around objects, the RRT leg planner (unsolvable queries end
 // within the caps, empty rooms always solved, determinism and thread
 // independence) and impossible tours.
