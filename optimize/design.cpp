@@ -542,19 +542,21 @@ class DesignRun {
       result_.tours = tours_;
       result_.final = terms;
     }
+    result_.polish.tours_found_before = terms.tours_found;
+    result_.polish.met_before = check_preferences(scene_, model_, poses).met;
     PolishHooks hooks;
     hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
-    hooks.try_pose = [this](const std::vector<Pose2>& p, int o, const Pose2& to) {
-      place(o, to);
+    hooks.place = [this](int o, const Pose2& to) { place(o, to); };
+    hooks.plan = [this](const std::vector<Pose2>& p) {
       ++iteration_;
       plan_current();
       return model_.evaluate(p, tours_, &round_.blockage());
     };
-    hooks.undo = [this](int o, const Pose2& to) { place(o, to); };
     hooks.kept = [this] { result_.tours = tours_; };
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
-    result_.polish = {pr.tried, pr.kept};
+    result_.polish.tried = pr.tried;
+    result_.polish.kept = pr.kept;
     if (pr.kept == 0) return;
     for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
     result_.final = terms;

@@ -119,6 +119,7 @@ struct DesignResult {
   //! The final polish (optimize/polish.h): poses planned and kept.
   struct Polish {
     int tried = 0, kept = 0;
+    int tours_found_before = 0, met_before = 0;  //!< of the annealer's best layout
   } polish;
   long legs_refused = 0;     //!< legs the free grid proved impossible
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)

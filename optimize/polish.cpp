@@ -9,6 +9,23 @@
 
 namespace hrs::optimize {
 
+namespace {
+
+//! The objects related to `object` by a relation, ascending.
+std::vector<int> partners(const geometry::Scene& scene, int object) {
+  std::vector<int> out;
+  for (const geometry::Relation& r : scene.relations) {
+    const int a = scene.find_object(r.a), b = scene.find_object(r.b);
+    if (a < 0 || b < 0) continue;
+    if (a == object && std::find(out.begin(), out.end(), b) == out.end()) out.push_back(b);
+    if (b == object && std::find(out.begin(), out.end(), a) == out.end()) out.push_back(a);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
 PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::vector<bool>& movable, std::vector<geometry::Pose2>& poses,
                     CostTerms& terms, const PolishHooks& hooks, int max_tries,
@@ -33,19 +50,44 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         p[i] = to;
         if (!hooks.valid(p, object)) continue;
         const PreferenceReport next = check_preferences(scene, model, p);
-        if (next.met <= report.met) continue;
+        // Alone, or with one relation partner moved to one of its own
+        // preferred poses (a bed turned round with the TV that faces it).
+        std::vector<std::pair<int, geometry::Pose2>> moves{{object, to}};
+        PreferenceReport best = next;
+        if (next.met <= report.met) {
+          for (const int j : partners(scene, object)) {
+            if (!movable[static_cast<std::size_t>(j)]) continue;
+            for (const geometry::Pose2& to_j : preferred_poses(scene, model, p, j)) {
+              std::vector<geometry::Pose2> q = p;
+              q[static_cast<std::size_t>(j)] = to_j;
+              if (!hooks.valid(q, j)) continue;
+              PreferenceReport both = check_preferences(scene, model, q);
+              if (both.met > best.met) {
+                best = std::move(both);
+                moves = {{object, to}, {j, to_j}};
+              }
+            }
+          }
+        }
+        if (best.met <= report.met) continue;
         ++out.tried;
-        const geometry::Pose2 from = poses[i];
-        const CostTerms t = hooks.try_pose(p, object, to);
+        std::vector<geometry::Pose2> q = poses;
+        CostTerms t;
+        for (const auto& [k, pose] : moves) {
+          q[static_cast<std::size_t>(k)] = pose;
+          hooks.place(k, pose);
+        }
+        t = hooks.plan(q);
         if (t.tours_found >= terms.tours_found) {
-          poses = std::move(p);
+          poses = std::move(q);
           terms = t;
-          report = next;
+          report = std::move(best);
           ++out.kept;
           hooks.kept();
           break;
         }
-        hooks.undo(object, from);
+        for (auto it = moves.rbegin(); it != moves.rend(); ++it)
+          hooks.place(it->first, poses[static_cast<std::size_t>(it->first)]);
       }
     }
   }

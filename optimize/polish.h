@@ -22,14 +22,10 @@ namespace hrs::optimize {
 struct PolishHooks {
   //! Exact validity of `poses` after moving object `moved`.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
-  //! Moves object `object` to `to` (C-space included), plans the tours and
-  //! returns the layout's terms.
-  std::function<CostTerms(const std::vector<geometry::Pose2>& poses, int object,
-                          const geometry::Pose2& to)>
-      try_pose;
-  //! Puts object `object` back at `to` (its pose before try_pose): the
-  //! tours of the layout before are restored by the caller's snapshot.
-  std::function<void(int object, const geometry::Pose2& to)> undo;
+  //! Moves object `object` to `to` (C-space included).
+  std::function<void(int object, const geometry::Pose2& to)> place;
+  //! Plans the tours of the layout `poses` (placed) and returns its terms.
+  std::function<CostTerms(const std::vector<geometry::Pose2>& poses)> plan;
   //! The pose tried last was kept: snapshot its tours.
   std::function<void()> kept;
 };

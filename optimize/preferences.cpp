@@ -16,30 +16,67 @@ namespace {
 
 Pose2 pose_of(const std::vector<Pose2>& poses, int i) { return poses[static_cast<std::size_t>(i)]; }
 
-//! The pose of object `o` against room edge `edge` with heading `theta`, its
-//! footprint `distance` from the edge's line, as near as the edge allows to
-//! the position `near`; nullopt when the footprint is wider than the edge.
-std::optional<Pose2> against_edge(const geometry::Scene& scene, const geometry::Object& o,
-                                  int edge, double theta, double distance, const Vec2& near) {
+//! The reference points of object `o` (heading `theta`) whose footprint lies
+//! `distance` from room edge `edge`'s line, inside the edge's extent: the
+//! segment p + t·u + k·n, t in [lo, hi].
+struct WallLine {
+  Vec2 p, u, n;
+  double k = 0.0, lo = 0.0, hi = 0.0;
+  double theta = 0.0;
+  Pose2 at(double t) const {
+    const Vec2 c = p + std::clamp(t, lo, hi) * u + k * n;
+    return {c.x, c.y, geometry::wrap_angle(theta)};
+  }
+};
+
+//! nullopt when the footprint is wider than the edge.
+std::optional<WallLine> wall_line(const geometry::Scene& scene, const geometry::Object& o, int edge,
+                                  double theta, double distance) {
   const auto& room = scene.room.polygon;
   const Vec2 p = room[static_cast<std::size_t>(edge)];
   const Vec2 q = room[(static_cast<std::size_t>(edge) + 1) % room.size()];
   const double length = geometry::norm(q - p);
   if (!(length > 0.0)) return std::nullopt;
-  const Vec2 u = (1.0 / length) * (q - p);
-  const Vec2 n{-u.y, u.x};  // inward: the room is counter-clockwise
+  WallLine line;
+  line.p = p;
+  line.u = (1.0 / length) * (q - p);
+  line.n = Vec2{-line.u.y, line.u.x};  // inward: the room is counter-clockwise
+  line.theta = theta;
   double min_n = std::numeric_limits<double>::infinity();
   double min_u = min_n, max_u = -min_n;
   for (const Vec2& v : o.footprint) {
     const Vec2 w = geometry::rotate(v, theta);
-    min_n = std::min(min_n, geometry::dot(w, n));
-    min_u = std::min(min_u, geometry::dot(w, u));
-    max_u = std::max(max_u, geometry::dot(w, u));
+    min_n = std::min(min_n, geometry::dot(w, line.n));
+    min_u = std::min(min_u, geometry::dot(w, line.u));
+    max_u = std::max(max_u, geometry::dot(w, line.u));
   }
   if (max_u - min_u > length) return std::nullopt;
-  const double along = std::clamp(geometry::dot(near - p, u), -min_u, length - max_u);
-  const Vec2 c = p + along * u + (distance - min_n) * n;
-  return Pose2{c.x, c.y, geometry::wrap_angle(theta)};
+  line.k = distance - min_n;
+  line.lo = -min_u;
+  line.hi = length - max_u;
+  return line;
+}
+
+//! The pose against `edge` nearest the position `near` (wall_line()).
+std::optional<Pose2> against_edge(const geometry::Scene& scene, const geometry::Object& o,
+                                  int edge, double theta, double distance, const Vec2& near) {
+  const auto line = wall_line(scene, o, edge, theta, distance);
+  if (!line) return std::nullopt;
+  return line->at(geometry::dot(near - line->p, line->u));
+}
+
+//! The points of `line` at distance `d` from `centre` (0, 1 or 2 poses), or
+//! when the line stays farther, its point nearest `centre`.
+void at_distance(const WallLine& line, const Vec2& centre, double d, std::vector<Pose2>& out) {
+  const double t0 = geometry::dot(centre - line.p, line.u);
+  const double off = line.k - geometry::dot(centre - line.p, line.n);
+  const double s = d * d - off * off;
+  if (s < 0.0) {
+    out.push_back(line.at(t0));  // as near as the wall gets
+    return;
+  }
+  for (const double t : {t0 - std::sqrt(s), t0 + std::sqrt(s)})
+    if (t >= line.lo - 1e-12 && t <= line.hi + 1e-12) out.push_back(line.at(t));
 }
 
 void add(PreferenceReport& report, PreferenceCheck check) {
@@ -112,8 +149,15 @@ std::vector<Pose2> preferred_poses(const geometry::Scene& scene, const CostModel
         if (k == 0) out.push_back({now.x, now.y, geometry::wrap_angle(theta)});
         continue;
       }
-      if (auto p = against_edge(scene, o, e, theta, *o.wall->distance, now.position()))
-        out.push_back(*p);
+      const auto line = wall_line(scene, o, e, theta, *o.wall->distance);
+      if (!line) continue;
+      out.push_back(line->at(geometry::dot(now.position() - line->p, line->u)));
+      // Along the wall where a relation's distance is met too.
+      for (const geometry::Relation& r : scene.relations) {
+        const int a = scene.find_object(r.a), b = scene.find_object(r.b);
+        if (!r.distance || a < 0 || b < 0 || (a != object && b != object)) continue;
+        at_distance(*line, pose_of(poses, a == object ? b : a).position(), *r.distance, out);
+      }
     }
   }
   for (const geometry::Relation& r : scene.relations) {
@@ -133,6 +177,13 @@ std::vector<Pose2> preferred_poses(const geometry::Scene& scene, const CostModel
       to.y = c.y;
     }
     out.push_back(to);
+    // In front of the partner at the distance (a table before a sofa, a TV
+    // across from it), turned as the relation asks.
+    if (r.distance) {
+      const Vec2 front{std::cos(other.theta), std::sin(other.theta)};
+      const Vec2 c = other.position() + *r.distance * front;
+      out.push_back({c.x, c.y, to.theta});
+    }
   }
   return out;
 }

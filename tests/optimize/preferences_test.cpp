@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Preferences (optimize/preferences.h): residuals against hand computation
+// (an object 3° off its wall, a TV facing away, a relation distance), which
+// terms count, the wall poses that preferred_poses() proposes on thousands
+// of random rooms and objects, and preference moves that never leave the
+// layout invalid.
+
+#include "optimize/preferences.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "geometry/error.h"
+#include "geometry/polygon_ops.h"
+#include "optimize/annealer.h"
+#include "optimize/design.h"
+#include "optimize/sequences.h"
+
+namespace hrs::optimize {
+namespace {
+
+using geometry::Pose2;
+using geometry::Scene;
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+//! Room 5 × 4; a desk that wants its back to a wall, a TV that wants to face
+//! the bed (relation angle π, distance 2.5), a fixed shelf with a wall
+//! preference (not counted) and a fixed lamp related to the shelf (not
+//! counted).
+Scene pref_scene() {
+  const std::string text = R"({
+    "format": "hrspace-scene/1", "name": "prefs",
+    "room": {"size": [5, 4]},
+    "door": {"center": [4.0, 0.0], "width": 0.9, "clear_depth": 0.5},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "desk", "size": [0.6, 1.2], "pose": [2.0, 0.3, 1.5707963267948966],
+       "wall": {"distance": 0.0, "angle": 0.0}},
+      {"id": "bed", "size": [2.0, 1.4], "pose": [2.5, 3.0, -1.5707963267948966]},
+      {"id": "tv", "size": [0.4, 1.0], "pose": [2.5, 0.5, 1.5707963267948966]},
+      {"id": "shelf", "size": [0.4, 1.0], "pose": [4.8, 2.5, 3.141592653589793], "fixed": true,
+       "wall": {"distance": 0.0, "angle": 0.0}},
+      {"id": "lamp", "size": [0.3, 0.3], "pose": [4.7, 3.7, 0], "fixed": true}
+    ],
+    "relations": [{"a": "tv", "b": "bed", "distance": 2.5, "angle": 3.141592653589793},
+                  {"a": "lamp", "b": "shelf", "distance": 1.0}],
+    "activity": {"transitions": {"door": {"desk": 1.0}, "desk": {"tv": 1.0}, "tv": {"desk": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })";
+  return geometry::parse_scene(text, "prefs");
+}
+
+std::vector<Pose2> poses_of(const Scene& s) {
+  std::vector<Pose2> p;
+  for (const auto& o : s.objects) p.push_back(o.pose);
+  return p;
+}
+
+const PreferenceCheck& find(const PreferenceReport& r, const std::string& kind,
+                            const std::string& object) {
+  for (const auto& c : r.checks)
+    if (c.kind == kind && c.object == object) return c;
+  throw std::runtime_error("no check " + kind + " " + object);
+}
+
+TEST(Preferences, ResidualsMatchHandComputation) {
+  const Scene s = pref_scene();
+  const CostModel model(s, scene_sequences(s));
+  std::vector<Pose2> p = poses_of(s);
+  PreferenceReport r = check_preferences(s, model, p);
+  // Counted: desk wall distance and angle, tv–bed distance and angle; not the
+  // fixed shelf's wall terms nor the fixed lamp–shelf relation.
+  EXPECT_EQ(r.total, 4);
+  EXPECT_EQ(r.met, 4);
+  EXPECT_NEAR(find(r, "wall_distance", "desk").residual, 0.0, 1e-12);
+  EXPECT_NEAR(find(r, "relation_distance", "tv").achieved, 2.5, 1e-12);
+
+  // The desk turned 3.5° about its centre: off its wall by 3.5° (> 3°), so
+  // the angle term fails; a back corner now reaches past the wall's line,
+  // so the distance term (0) is still met.
+  p[0].theta = kPi / 2 + 3.5 * kDeg;
+  r = check_preferences(s, model, p);
+  EXPECT_NEAR(find(r, "wall_angle", "desk").residual, 3.5 * kDeg, 1e-12);
+  EXPECT_FALSE(find(r, "wall_angle", "desk").met);
+  EXPECT_EQ(r.met, 3);
+  // 2.5° is within the 3° tolerance.
+  p[0].theta = kPi / 2 - 2.5 * kDeg;
+  EXPECT_TRUE(find(check_preferences(s, model, p), "wall_angle", "desk").met);
+  // Moved 4 cm off the wall: met (5 cm); 6 cm: not met.
+  p[0] = {2.0, 0.34, kPi / 2};
+  EXPECT_NEAR(find(check_preferences(s, model, p), "wall_distance", "desk").residual, 0.04, 1e-12);
+  EXPECT_TRUE(find(check_preferences(s, model, p), "wall_distance", "desk").met);
+  p[0] = {2.0, 0.36, kPi / 2};
+  EXPECT_FALSE(find(check_preferences(s, model, p), "wall_distance", "desk").met);
+
+  // The TV facing away from the bed: 180° off its relation angle.
+  p = poses_of(s);
+  p[2].theta = -kPi / 2;
+  r = check_preferences(s, model, p);
+  EXPECT_NEAR(find(r, "relation_angle", "tv").residual, kPi, 1e-12);
+  EXPECT_FALSE(find(r, "relation_angle", "tv").met);
+  // Relation distance tolerance: max(0.1, 10 % of 2.5) = 0.25.
+  p = poses_of(s);
+  p[2].y = 0.5 - 0.24;
+  EXPECT_TRUE(find(check_preferences(s, model, p), "relation_distance", "tv").met);
+  p[2].y = 0.5 - 0.26;
+  EXPECT_FALSE(find(check_preferences(s, model, p), "relation_distance", "tv").met);
+}
+
+TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
+  std::mt19937_64 rng(35);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0;
+  for (int room = 0; room < 300; ++room) {
+    // A rectangle or an L of random proportions, counter-clockwise.
+    const double w = 3 + 5 * u(rng), h = 3 + 4 * u(rng);
+    std::string polygon;
+    if (room % 2 == 0) {
+      polygon = "[[0,0],[" + std::to_string(w) + ",0],[" + std::to_string(w) + "," +
+                std::to_string(h) + "],[0," + std::to_string(h) + "]]";
+    } else {
+      const double cx = w * (0.4 + 0.3 * u(rng)), cy = h * (0.4 + 0.3 * u(rng));
+      polygon = "[[0,0],[" + std::to_string(w) + ",0],[" + std::to_string(w) + "," +
+                std::to_string(cy) + "],[" + std::to_string(cx) + "," + std::to_string(cy) +
+                "],[" + std::to_string(cx) + "," + std::to_string(h) + "],[0," +
+                std::to_string(h) + "]]";
+    }
+    const double depth = 0.3 + 0.9 * u(rng), width = 0.4 + 1.6 * u(rng);
+    const double distance = u(rng) < 0.5 ? 0.0 : 0.3 * u(rng);
+    const double angle = u(rng) < 0.5 ? 0.0 : (u(rng) < 0.5 ? kPi : kPi / 2);
+    const std::string text = R"({"format": "hrspace-scene/1", "name": "r",
+      "room": {"polygon": )" + polygon + R"(},
+      "door": {"center": [1.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+      "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+      "objects": [{"id": "o", "size": [)" + std::to_string(depth) + "," + std::to_string(width) +
+                             R"(], "pose": [1.5, 1.5, 0.3],
+        "wall": {"distance": )" + std::to_string(distance) + R"(, "angle": )" +
+                             std::to_string(angle) + R"(}},
+        {"id": "p", "size": [0.4, 0.4], "pose": [2.2, 1.2, 0]}],
+      "activity": {"transitions": {"door": {"o": 1.0}, "o": {"p": 1.0}, "p": {"o": 1.0}},
+                   "sequences": 2, "visits": 2}})";
+    Scene s;
+    try {
+      s = geometry::parse_scene(text, "random");
+    } catch (const InputError&) {
+      continue;  // the object overlaps the other or leaves a small L room
+    }
+    const CostModel model(s, scene_sequences(s));
+    std::vector<Pose2> p = poses_of(s);
+    for (int trial = 0; trial < 10; ++trial) {
+      p[0] = {w * u(rng), h * u(rng), 2 * kPi * u(rng)};
+      const auto candidates = preferred_poses(s, model, p, 0);
+      for (const Pose2& c : candidates) {
+        // Each wall pose touches its wall's line at the wanted distance with
+        // the wanted heading: then, wherever it is inside the room and its
+        // wall is the nearest, both wall terms are met.
+        std::vector<Pose2> q = p;
+        q[0] = c;
+        geometry::Object o = s.objects[0];
+        o.pose = c;
+        if (!geometry::polygon_inside(geometry::world_footprint(o), s.room.polygon)) continue;
+        const int e = model.nearest_wall(0, c);
+        const double d = model.wall_distance(geometry::world_footprint(o), e);
+        if (std::abs(d - distance) > 1e-9) continue;  // another wall's pose
+        const PreferenceReport r = check_preferences(s, model, q);
+        EXPECT_EQ(r.met, 2) << "room " << room << " trial " << trial;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
+}
+
+TEST(Preferences, PreferenceMovesNeverLeaveTheLayoutInvalid) {
+  for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
+    const Scene scene = geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    CostModel model(scene, scene_sequences(scene));
+    model.set_bounded_preferences(true);
+    Scene work = scene;
+    std::vector<bool> movable;
+    for (const auto& o : scene.objects) movable.push_back(!o.fixed);
+    AnnealOptions options;
+    options.iterations = 1500;
+    options.preference_probability = 0.9;
+    options.t_start = 0.5;
+    options.t_end = 0.01;
+    int preference_moves = 0, accepted = 0;
+    AnnealCallbacks cb;
+    cb.move_valid = [&](const std::vector<Pose2>& p, int moved) {
+      const Pose2 old = work.objects[moved].pose;
+      work.objects[moved].pose = p[moved];
+      const bool ok = object_violation(work, moved).empty();
+      work.objects[moved].pose = old;
+      return ok;
+    };
+    cb.cost = [&](const std::vector<Pose2>& p, const Move& m, const Acceptance&) {
+      if (m.object >= 0) work.objects[m.object].pose = m.to;
+      const auto in = model.interior(p);
+      return in.distance + in.rotation;
+    };
+    cb.rejected = [&](const Move& m) { work.objects[m.object].pose = m.from; };
+    cb.preferred = [&](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+      auto c = preferred_poses(scene, model, p, o);
+      if (auto slot = wall_slot(scene, o, rng)) c.push_back(*slot);
+      if (c.empty()) return std::optional<Pose2>();
+      return std::optional<Pose2>(c[std::uniform_int_distribution<std::size_t>(0, c.size() - 1)(rng)]);
+    };
+    cb.progress = [&](const TraceEntry& e) {
+      if (e.preference) ++preference_moves;
+      if (e.accepted) ++accepted;
+      // The chain's state is `work`: after every iteration it is valid.
+      ASSERT_EQ(layout_violation(work), "") << file << " iteration " << e.iteration;
+    };
+    std::mt19937_64 rng(7);
+    const AnnealResult r = anneal(poses_of(scene), movable, options, cb, rng);
+    EXPECT_GT(preference_moves, 500) << file;
+    EXPECT_GT(accepted, 20) << file;
+    // Preference moves find the preferences: the best layout meets more than
+    // the input's (the shipped inputs meet most, so at least as many).
+    const PreferenceReport before = check_preferences(scene, model, poses_of(scene));
+    const PreferenceReport after = check_preferences(scene, model, r.best);
+    EXPECT_GE(after.met, before.met) << file;
+  }
+}
+
+}  // namespace
+}  // namespace hrs::optimize
