@@ -313,3 +313,38 @@ TEST(DesignLoop, LargeClearanceWeightWidensTheToursCorridors) {
 
 }  // namespace
 }  // namespace hrs::optimize
+
+namespace hrs::optimize {
+namespace {
+
+TEST(DesignLoop, PolishNeverLosesAFoundTourAndOnlyAddsPreferences) {
+  int kept = 0, runs = 0;
+  for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+      DesignOptions o;
+      o.seed = seed;
+      o.iterations = 60;  // a short anneal leaves work for the polish
+      o.threads = 2;
+      const DesignResult r = design(scene, o);
+      const std::string what = file + " seed " + std::to_string(seed);
+      ++runs;
+      kept += r.polish.kept;
+      EXPECT_GE(r.final.tours_found, r.polish.tours_found_before) << what;
+      EXPECT_GE(r.preferences.met, r.polish.met_before) << what;
+      if (r.polish.kept > 0) EXPECT_GT(r.preferences.met, r.polish.met_before) << what;
+      EXPECT_LE(r.polish.kept, r.polish.tried) << what;
+      EXPECT_TRUE(r.valid) << what;
+      EXPECT_EQ(layout_violation(r.layout), "") << what;
+      int found = 0;
+      for (const auto& t : r.tours) found += t.found ? 1 : 0;
+      EXPECT_EQ(found, r.final.tours_found) << what;
+    }
+  }
+  // The situation the test is about occurred.
+  EXPECT_GT(kept, 0) << "the polish kept nothing in " << runs << " designs";
+}
+
+}  // namespace
+}  // namespace hrs::optimize
