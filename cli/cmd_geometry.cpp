@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 
+#include "api/outlook.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "geometry/cspace.h"
@@ -14,13 +15,17 @@
 namespace hrs::cli {
 
 int cmd_validate(const Argv& argv) {
-  const Args args(argv, {});
-  const std::string usage = "hrspace validate SCENE";
+  const Args args(argv, {}, {"quiet"});
+  const std::string usage = "hrspace validate SCENE [--quiet]";
   if (args.help()) {
     std::cout << "usage: " << usage
               << "\n\nChecks a scene file (hrspace-scene/1) against every rule of the format and\n"
                  "prints a summary. Exit 0 when valid, 2 with one line naming the file, the\n"
-                 "field (JSON pointer) and the problem otherwise.\n";
+                 "field (JSON pointer) and the problem otherwise.\n\n"
+                 "Then, as information (exit 0), what a design will face in the input layout:\n"
+                 "how many of the M tours the default planner finds there (planned for at most\n"
+                 "30 s), which stops have no free goal pose, and which preferences are unmet\n"
+                 "(docs/optimize.md \"Preferences\"). --quiet skips this part.\n";
     return 0;
   }
   args.expect_positional(1, usage);
@@ -48,6 +53,30 @@ int cmd_validate(const Argv& argv) {
       longest < s.activity.visits) {
     std::printf("note       no sequence of %d visits (longest %d): hrspace design refuses it\n",
                 s.activity.visits, longest);
+    return 0;
+  }
+  if (args.flag("quiet")) return 0;
+  std::fflush(stdout);
+  const api::DesignOutlook o = api::design_outlook(s, 30.0);
+  if (o.planned) {
+    std::printf("tours      %d/%d found in the input layout%s\n", o.tours_found, o.tours_total,
+                o.tours_found == o.tours_total ? "" : " (the design must open the others)");
+    for (const std::string& u : o.unfound) std::printf("           unreachable: %s\n", u.c_str());
+  } else {
+    std::printf("tours      not planned within 30 s\n");
+  }
+  for (const std::string& id : o.stops_without_goal)
+    std::printf("stop       %s has no free goal pose: the chair cannot approach it as placed\n",
+                id.c_str());
+  std::printf("preferences %d/%d met in the input layout\n", o.preferences.met,
+              o.preferences.total);
+  for (const auto& c : o.preferences.checks) {
+    if (c.met) continue;
+    const bool angle = c.kind.ends_with("angle");
+    std::printf("           %s %s%s%s: off by %.3g %s (tolerance %.3g)\n", c.kind.c_str(),
+                c.object.c_str(), c.other.empty() ? "" : " ", c.other.c_str(),
+                angle ? c.residual * 57.29577951308232 : c.residual, angle ? "deg" : "m",
+                angle ? c.tolerance * 57.29577951308232 : c.tolerance);
   }
   return 0;
 }

@@ -163,6 +163,12 @@ sed 's/\[4.5, 0\], \[4.5, 4.0\], \[0, 4.0\]/[1500, 0], [1500, 4.0], [0, 4.0]/' "
 grep -q 1500 "$tmp/km.json" || { echo "FAIL: km.json not made"; fails=$((fails+1)); }
 check "LateChecksComeFirst room beyond 1 km" 2 "$bin" validate "$tmp/km.json"
 expect_err "LateChecksComeFirst room pointer" "/room/polygon/1/0: must be within"
+# validate: what a design will face (information, exit 0), skipped by --quiet.
+check "validate outlook" 0 "$bin" validate "$src/scenes/l_studio.json"
+expect_out "validate sealed L-studio" "tours      0/10 found in the input layout (the design must open the others)"
+expect_out "validate unmet preference" "           wall_angle sofa: off by 90 deg (tolerance 3)"
+check "validate quiet" 0 "$bin" validate "$src/scenes/l_studio.json" --quiet
+if grep -q "^tours" "$tmp/out"; then echo "FAIL: --quiet printed the outlook"; fails=$((fails+1)); fi
 # design --planner: presets and items, refused before any work with one line.
 check "design unknown preset" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner fast
 expect_err "design unknown preset named" "--planner: unknown planner preset 'fast' (default, baseline, paper, literal)"
