@@ -72,7 +72,7 @@ int cmd_validate(const Argv& argv) {
               o.preferences.total);
   for (const auto& c : o.preferences.checks) {
     if (c.met) continue;
-    const bool angle = c.kind.ends_with("angle");
+    const bool angle = c.angular();
     std::printf("           %s %s%s%s: off by %.3g %s (tolerance %.3g)\n", c.kind.c_str(),
                 c.object.c_str(), c.other.empty() ? "" : " ", c.other.c_str(),
                 angle ? c.residual * 57.29577951308232 : c.residual, angle ? "deg" : "m",

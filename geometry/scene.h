@@ -118,6 +118,9 @@ struct Relation {
   std::string a, b;
   std::optional<double> distance;  //!< target centre distance
   std::optional<double> angle;     //!< target of wrap(theta_a - theta_b)
+  //! a's front (local +x) points at b's reference point: a TV that faces
+  //! the bed, not merely a heading opposite to it.
+  bool faces = false;
   double weight = 1.0;
   friend bool operator==(const Relation&, const Relation&) = default;
 };

@@ -317,7 +317,7 @@ class SceneReader : public scene_io::FieldReader {
       const std::string rp = child(ptr, i);
       const Json& e = j[i];
       expect_object(e, rp);
-      check_keys(e, rp, {"a", "b", "distance", "angle", "weight"});
+      check_keys(e, rp, {"a", "b", "distance", "angle", "faces", "weight"});
       Relation r;
       r.a = known_id(require(e, rp, "a"), child(rp, "a"), scene);
       r.b = known_id(require(e, rp, "b"), child(rp, "b"), scene);
@@ -327,7 +327,9 @@ class SceneReader : public scene_io::FieldReader {
       if (const Json* d = optional(e, "distance"))
         r.distance = non_negative(*d, child(rp, "distance"));
       if (const Json* a = optional(e, "angle")) r.angle = angle(*a, child(rp, "angle"));
-      if (!r.distance && !r.angle) fail(child(rp, "distance"), "give distance and/or angle");
+      if (const Json* f = optional(e, "faces")) r.faces = boolean(*f, child(rp, "faces"));
+      if (!r.distance && !r.angle && !r.faces)
+        fail(child(rp, "distance"), "give distance, angle and/or faces");
       if (const Json* w = optional(e, "weight")) r.weight = weight(*w, child(rp, "weight"));
       out.push_back(std::move(r));
     }

@@ -150,6 +150,7 @@ OrderedJson relations_json(const std::vector<Relation>& relations) {
     j["b"] = r.b;
     if (r.distance) j["distance"] = *r.distance;
     if (r.angle) j["angle"] = *r.angle;
+    if (r.faces) j["faces"] = true;
     if (r.weight != 1.0) j["weight"] = r.weight;
     out.push_back(j);
   }

@@ -28,6 +28,12 @@ double bounded_term(double residual, double tolerance) {
 
 }  // namespace
 
+double facing_error(const Pose2& a, const Pose2& b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  if (dx == 0.0 && dy == 0.0) return 0.0;
+  return geometry::wrap_angle(std::atan2(dy, dx) - a.theta);
+}
+
 CostModel::CostModel(const geometry::Scene& scene, std::vector<Sequence> sequences)
     : scene_(scene), sequences_(std::move(sequences)) {
   double total = 0.0;
@@ -120,6 +126,10 @@ InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
     }
     if (rel.angle) {
       const double e = geometry::wrap_angle(a.theta - b.theta - *rel.angle);
+      c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle) : squared(e));
+    }
+    if (rel.faces) {
+      const double e = facing_error(a, b);
       c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle) : squared(e));
     }
   }

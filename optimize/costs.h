@@ -84,6 +84,10 @@ struct CostTerms {
   double total() const { return path() + interior(); }
 };
 
+//! How far a's front (heading) is turned from pointing at b's position,
+//! wrapped to (−π, π]; 0 when the two positions coincide.
+double facing_error(const Pose2& a, const Pose2& b);
+
 //! Unweighted interior costs.
 struct InteriorCosts {
   double distance = 0.0;  //!< C_I^d, m²

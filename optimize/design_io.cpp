@@ -151,7 +151,7 @@ json trace_step_json(const DesignStep& s, const geometry::Scene& layout) {
   json step = {{"iteration", e.iteration + 1},
                {"temperature", e.temperature},
                {"object", e.object >= 0 ? json(layout.objects[e.object].id) : json(nullptr)},
-               {"move", e.rotation ? "rotate" : (e.jump ? "jump" : "translate")},
+               {"move", e.preference ? "prefer" : e.rotation ? "rotate" : (e.jump ? "jump" : "translate")},
                {"valid", e.valid},
                {"accepted", e.accepted},
                {"proposed", finite_or_null(e.proposed_cost)},

@@ -137,12 +137,14 @@ void preferences_layer(std::ostringstream& s, const Frame& f, const geometry::Sc
     std::vector<std::string> notes;
     for (const PreferenceCheck& c : report.checks) {
       if (c.met || c.object != o.id) continue;
-      const bool angle = c.kind.ends_with("angle");
+      const bool angle = c.angular();
       char value[48];
       std::snprintf(value, sizeof value, angle ? "%.0f\u00b0" : "%.2f m",
                     angle ? c.residual * 180.0 / std::numbers::pi : c.residual);
-      const std::string what = c.kind.starts_with("wall") ? (angle ? "wall angle" : "wall")
-                                                         : "\u2192 " + c.other + (angle ? " angle" : "");
+      const std::string what = c.kind.starts_with("wall")
+                                   ? (angle ? "wall angle" : "wall")
+                                   : "\u2192 " + c.other +
+                                         (c.kind == "relation_faces" ? " facing" : angle ? " angle" : "");
       notes.push_back(what + " " + value);
     }
     if (notes.empty()) continue;

@@ -83,7 +83,7 @@ void add(PreferenceReport& report, PreferenceCheck check) {
   check.met = check.residual <= check.tolerance;
   report.total += 1;
   report.met += check.met ? 1 : 0;
-  if (check.kind.ends_with("angle")) report.worst_angle = std::max(report.worst_angle, check.residual);
+  if (check.angular()) report.worst_angle = std::max(report.worst_angle, check.residual);
   report.checks.push_back(std::move(check));
 }
 
@@ -128,6 +128,10 @@ PreferenceReport check_preferences(const geometry::Scene& scene, const CostModel
       add(report, {"relation_angle", r.a, r.b, -1, *r.angle, achieved,
                    std::abs(geometry::wrap_angle(achieved - *r.angle)), tol.relation_angle});
     }
+    if (r.faces) {
+      const double e = facing_error(pa, pb);
+      add(report, {"relation_faces", r.a, r.b, -1, 0.0, e, std::abs(e), tol.relation_angle});
+    }
   }
   return report;
 }
@@ -155,8 +159,11 @@ std::vector<Pose2> preferred_poses(const geometry::Scene& scene, const CostModel
       // Along the wall where a relation's distance is met too.
       for (const geometry::Relation& r : scene.relations) {
         const int a = scene.find_object(r.a), b = scene.find_object(r.b);
-        if (!r.distance || a < 0 || b < 0 || (a != object && b != object)) continue;
-        at_distance(*line, pose_of(poses, a == object ? b : a).position(), *r.distance, out);
+        if (a < 0 || b < 0 || (a != object && b != object)) continue;
+        const Vec2 partner = pose_of(poses, a == object ? b : a).position();
+        if (r.distance) at_distance(*line, partner, *r.distance, out);
+        // Facing the partner from the wall: straight across from it.
+        if (r.faces && a == object) out.push_back(line->at(geometry::dot(partner - line->p, line->u)));
       }
     }
   }
@@ -168,6 +175,8 @@ std::vector<Pose2> preferred_poses(const geometry::Scene& scene, const CostModel
     Pose2 to = now;
     if (r.angle) to.theta = geometry::wrap_angle(a == object ? other.theta + *r.angle
                                                              : other.theta - *r.angle);
+    if (r.faces && a == object)
+      to.theta = geometry::wrap_angle(now.theta + facing_error(now, other));
     if (r.distance) {
       Vec2 dir = now.position() - other.position();
       const double len = geometry::norm(dir);
@@ -182,7 +191,8 @@ std::vector<Pose2> preferred_poses(const geometry::Scene& scene, const CostModel
     if (r.distance) {
       const Vec2 front{std::cos(other.theta), std::sin(other.theta)};
       const Vec2 c = other.position() + *r.distance * front;
-      out.push_back({c.x, c.y, to.theta});
+      const double theta = r.faces && a == object ? std::atan2(other.y - c.y, other.x - c.x) : to.theta;
+      out.push_back({c.x, c.y, theta});
     }
   }
   return out;

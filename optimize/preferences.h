@@ -37,7 +37,9 @@ struct PreferenceTolerances {
 
 //! One stated preference term on one layout.
 struct PreferenceCheck {
-  std::string kind;     //!< wall_distance, wall_angle, relation_distance, relation_angle
+  //! wall_distance, wall_angle, relation_distance, relation_angle,
+  //! relation_faces (a's front turned from pointing at b's position)
+  std::string kind;
   std::string object;   //!< the object (relation: a)
   std::string other;    //!< relation: b; wall terms: "" (the wall is `wall`)
   int wall = -1;        //!< wall terms: the room edge counted as nearest
@@ -46,6 +48,8 @@ struct PreferenceCheck {
   double residual = 0.0;  //!< |achieved − target|, angles wrapped to [0, π]
   double tolerance = 0.0;
   bool met = false;
+  //! An angle term (wall_angle, relation_angle, relation_faces): radians.
+  bool angular() const { return kind.ends_with("angle") || kind == "relation_faces"; }
 };
 
 struct PreferenceReport {

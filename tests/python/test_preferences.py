@@ -92,6 +92,12 @@ def measure(scene):
             total += 1
             met += res <= math.radians(5)
             worst_angle = max(worst_angle, res)
+        if r.get("faces"):
+            (ax, ay, at), (bx, by) = a["pose"], b["pose"][:2]
+            res = abs(wrap(math.atan2(by - ay, bx - ax) - at))
+            total += 1
+            met += res <= math.radians(5)
+            worst_angle = max(worst_angle, res)
     return met, total, math.degrees(worst_angle)
 
 
@@ -126,6 +132,6 @@ def test_a_tv_facing_away_is_reported_unmet(tmp_path):
     assert status == 0, err
     report = json.loads((tmp_path / "d" / "report.json").read_text())
     items = {(i["kind"], i["object"]): i for i in report["preferences"]["items"]}
-    assert items[("relation_angle", "tv")]["residual"] == pytest.approx(math.pi, abs=1e-9)
-    assert not items[("relation_angle", "tv")]["met"]
+    assert items[("relation_faces", "tv")]["residual"] == pytest.approx(math.pi, abs=1e-9)
+    assert not items[("relation_faces", "tv")]["met"]
     assert measure(scene)[:2] == (report["preferences"]["met"], report["preferences"]["total"])
