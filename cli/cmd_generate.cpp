@@ -106,9 +106,11 @@ int cmd_generate(const Argv& argv) {
       tours += " WITNESS NOT TOURABLE";
       ++failed;
     }
-    std::printf("%-14s %-4s objects %3zu  area %6.2f m^2  plants %2d  tours %s  %.2f s\n",
-                r.name.c_str(), experiments::zoo::shape_name(r.shape).c_str(),
-                r.scene.objects.size(), r.area, r.plant_attempts, tours.c_str(), r.seconds);
+    std::printf(
+        "%-14s %-4s objects %3zu  area %6.2f m^2  plants %2d (unplaced %d, untourable %d)  "
+        "tours %s  %.2f s\n",
+        r.name.c_str(), experiments::zoo::shape_name(r.shape).c_str(), r.scene.objects.size(),
+        r.area, r.plant_attempts, r.unplaced, r.untourable, tours.c_str(), r.seconds);
     std::fflush(stdout);
   }
   return failed ? 1 : 0;

@@ -87,6 +87,7 @@ struct Item {
   double depth, width;
   bool fixed;
   std::string id;
+  bool toured = false;  //!< a node of the AO graph: gets a stopping zone
 };
 
 std::vector<Item> draw_furniture(std::mt19937_64& rng, int count) {
@@ -106,7 +107,7 @@ std::vector<Item> draw_furniture(std::mt19937_64& rng, int count) {
     if (is_large && large >= std::max(1, count / 8)) continue;
     large += is_large;
     Item it{kind, cm(kind->depth * draw(rng, 0.9, 1.1)), cm(kind->width * draw(rng, 0.9, 1.1)),
-            uniform01(rng) < kind->fixed_share, ""};
+            uniform01(rng) < kind->fixed_share, "", false};
     it.id = std::string(kind->name) + "_" + std::to_string(++used[kind->name]);
     items.push_back(std::move(it));
   }
@@ -161,17 +162,19 @@ Floor draw_floor(const Plan& plan, double area, std::mt19937_64& rng) {
     }
     case Shape::kL: {
       const double fx = draw(rng, 0.35, 0.5), fy = draw(rng, 0.35, 0.5);
-      const auto [w, d] = box_of(rng, area / (1.0 - fx * fy), 4.2);
-      const double cw = cm(std::min(fx * w, w - 2.4)), cd = cm(std::min(fy * d, d - 2.4));
+      const auto [w, d] = box_of(rng, area / (1.0 - fx * fy), 4.8);
+      const double cw = cm(std::min(fx * w, w - 2.6)), cd = cm(std::min(fy * d, d - 2.6));
       f.polygon = {{0, 0}, {w, 0}, {w, d - cd}, {w - cw, d - cd}, {w - cw, d}, {0, d}};
       break;
     }
     case Shape::kU: {
       const double fx = draw(rng, 0.25, 0.4), fy = draw(rng, 0.3, 0.5);
+      // Arms at least 2.4 m wide, the base at least 2.6 m deep.
       auto [w, d] = box_of(rng, area / (1.0 - fx * fy), 4.6);
-      const double nw = cm(std::clamp(fx * w, 1.0, w - 3.6));
-      const double nd = cm(std::min(fy * d, d - 2.4));
-      const double x1 = cm(draw(rng, 1.8, w - 1.8 - nw)), x2 = x1 + nw;
+      w = std::max(w, 5.8);
+      const double nw = cm(std::clamp(fx * w, 1.0, w - 4.8));
+      const double nd = cm(std::min(fy * d, d - 2.6));
+      const double x1 = cm(draw(rng, 2.4, w - 2.4 - nw)), x2 = x1 + nw;
       f.polygon = {{0, 0}, {w, 0}, {w, d}, {x2, d}, {x2, d - nd}, {x1, d - nd}, {x1, d}, {0, d}};
       break;
     }
@@ -266,11 +269,11 @@ Polygon local_rect(double x0, double y0, double x1, double y1) {
 }
 
 //! The stopping zone kept free beside side `side` of an object: as deep as
-//! the approach gap, the chair's length and 0.1 m, 0.3 m wider than the chair.
+//! the approach gap, the chair's length and 0.3 m, 0.6 m wider than the chair.
 Polygon approach_zone(const Object& o, double depth, double width, Side side,
                       const geometry::Wheelchair& chair) {
-  const double reach = o.approach_or_default().gap + chair.length + 0.1;
-  const double h = 0.5 * chair.width + 0.15, hd = 0.5 * depth, hw = 0.5 * width;
+  const double reach = o.approach_or_default().gap + chair.length + 0.3;
+  const double h = 0.5 * chair.width + 0.3, hd = 0.5 * depth, hw = 0.5 * width;
   Polygon local;
   switch (side) {
     case Side::kFront: local = local_rect(hd, -h, hd + reach, h); break;
@@ -322,6 +325,15 @@ Pose2 draw_pose(const Polygon& room, const Item& it, std::mt19937_64& rng) {
     return {p.x, p.y, std::atan2(nrm.y, nrm.x)};
   }
   const geometry::Box box = geometry::bounding_box(room);
+  if (!it.toured && uniform01(rng) < 0.7) {
+    // Most furniture that is not toured stands near a wall, out of the way.
+    const std::size_t n = room.size(), e = uniform_index(rng, n);
+    const Vec2 a = room[e], b = room[(e + 1) % n];
+    const Vec2 d = (1.0 / norm(b - a)) * (b - a), nrm{-d.y, d.x};
+    const double reach = 0.5 * std::max(it.depth, it.width) + draw(rng, 0.0, 0.3);
+    const Vec2 p = a + draw(rng, 0.0, norm(b - a)) * d + reach * nrm;
+    return {p.x, p.y, wrap_angle(draw(rng, -kPi, kPi))};
+  }
   const double theta = uniform01(rng) < 0.5 ? draw(rng, -kPi, kPi)
                                             : kPi / 2 * static_cast<double>(uniform_index(rng, 4));
   return {draw(rng, box.xmin + 0.2, box.xmax - 0.2), draw(rng, box.ymin + 0.2, box.ymax - 0.2),
@@ -333,6 +345,12 @@ bool plant(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
   Occupancy occ;
   for (const Object& p : scene.objects) occ.add_solid(geometry::world_footprint(p));
   occ.add_zone(geometry::door_clear_zone(scene));
+  // Room to turn inside the door: 2.4 m wide, 2.2 m deep (kept free in the
+  // plant only, not a rule of the scene).
+  {
+    const Vec2 n = geometry::door_inward_normal(scene), d{n.y, -n.x}, c = scene.door.center;
+    occ.add_zone({c - 1.2 * d, c + 1.2 * d, c + 1.2 * d + 2.2 * n, c - 1.2 * d + 2.2 * n});
+  }
   // Wall objects first, larger first.
   std::vector<std::size_t> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -352,6 +370,11 @@ bool plant(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
       if (Occupancy::hits(fp, occ.solids, occ.solid_boxes) ||
           Occupancy::hits(fp, occ.zones, occ.zone_boxes))
         continue;
+      if (!it.toured) {
+        occ.add_solid(fp);
+        ok = true;
+        break;
+      }
       // One allowed side, tried in random order, must have its stopping zone.
       std::vector<Side> sides;
       for (int s = 0; s < 4; ++s)
@@ -419,13 +442,11 @@ std::vector<double> percents(std::mt19937_64& rng, std::size_t count) {
   return p;
 }
 
-void add_activity(Scene& scene, std::mt19937_64& rng) {
+//! The AO graph over the toured items.
+void add_activity(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
   std::vector<std::string> ids;
-  for (const Object& o : scene.objects)
-    if (!is_partition(o)) ids.push_back(o.id);
-  std::shuffle(ids.begin(), ids.end(), rng);
-  const std::size_t k = std::min(ids.size(), 3 + uniform_index(rng, 8));
-  ids.resize(k);
+  for (const Item& it : items)
+    if (it.toured) ids.push_back(it.id);
   auto row = [&](std::size_t outs, const std::string* self) {
     std::vector<std::string> to;
     for (const auto& id : ids)
@@ -534,7 +555,14 @@ ZooRoom generate_room(const ZooOptions& options, int index) {
       pieces += plan.two_pieces.back() ? 2 : 1;
     }
   }
-  const std::vector<Item> items = draw_furniture(rng, objects - pieces);
+  std::vector<Item> items = draw_furniture(rng, objects - pieces);
+  {  // 3 to 10 of them are nodes of the AO graph
+    std::vector<std::size_t> pick(items.size());
+    for (std::size_t i = 0; i < pick.size(); ++i) pick[i] = i;
+    std::shuffle(pick.begin(), pick.end(), rng);
+    pick.resize(std::min(items.size(), 3 + uniform_index(rng, 8)));
+    for (std::size_t i : pick) items[i].toured = true;
+  }
   double footprint = 0.0;
   for (const Item& it : items) footprint += it.depth * it.width;
   // From cramped (2.6 times the furniture) to open (4.5 times).
@@ -552,9 +580,12 @@ ZooRoom generate_room(const ZooOptions& options, int index) {
     s.door = floor.door;
     s.wheelchair = {1.1, 0.65, 0.7};
     s.objects = floor.partitions;
-    if (!plant(s, items, arng)) continue;
+    if (!plant(s, items, arng)) {
+      ++room.unplaced;
+      continue;
+    }
     add_relations(s, arng);
-    add_activity(s, arng);
+    add_activity(s, items, arng);
     Scene input = s;
     scramble(input, arng);
     // Both files must pass the reader (they always should: this is a guard).
@@ -574,6 +605,7 @@ ZooRoom generate_room(const ZooOptions& options, int index) {
       room.tours_total = c.tours_total;
       room.witness_cost = c.cost;
       room.feasible = c.tours_total > 0 && c.tours_found == c.tours_total;
+      room.untourable += !room.feasible;
     }
     if (room.feasible) break;
   }

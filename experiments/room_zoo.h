@@ -59,6 +59,8 @@ struct ZooRoom {
   geometry::Scene witness;   //!< the same scene with the planted poses
   double area = 0.0;         //!< floor area, m²
   int plant_attempts = 0;    //!< plants drawn, the accepted one included
+  int unplaced = 0;          //!< plants dropped because an object found no place
+  int untourable = 0;        //!< plants dropped because a tour of the witness failed
   bool feasible = false;     //!< the witness's tours were all found (or not checked)
   int tours_found = 0, tours_total = 0;  //!< of the witness (0 when not checked)
   double witness_cost = 0.0;             //!< C_total of the witness (0 when not checked)
