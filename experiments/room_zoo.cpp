@@ -37,7 +37,7 @@ constexpr double kWallInset = 2e-10;
 constexpr double kPartitionDepth = 0.1;
 constexpr char kPartitionPrefix[] = "partition_";
 //! Tries to place one object in a plant, and to scramble one.
-constexpr int kPlaceTries = 250;
+constexpr int kPlaceTries = 400;
 constexpr int kScrambleTries = 300;
 
 // ---- furniture ---------------------------------------------------------------
@@ -243,15 +243,40 @@ bool boxes_meet(const Rect& a, const Rect& b) {
   return a.xmin < b.xmax && b.xmin < a.xmax && a.ymin < b.ymax && b.ymin < a.ymax;
 }
 
-//! Obstacles of a plant: footprints (objects) and zones kept free.
+//! Separating axes of two convex polygons in doubles: +1 when an axis
+//! separates them by more than 1e-9 m, -1 when every axis overlaps by more
+//! than 1e-9 m (the interiors meet), 0 when too close to tell (then the exact
+//! predicate decides).
+int convex_overlap(const Polygon& a, const Polygon& b) {
+  bool deep = true;
+  for (const Polygon* p : {&a, &b}) {
+    for (std::size_t i = 0; i < p->size(); ++i) {
+      const Vec2 e = (*p)[(i + 1) % p->size()] - (*p)[i];
+      const Vec2 axis = (1.0 / norm(e)) * Vec2{-e.y, e.x};
+      double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
+      for (Vec2 v : a) amin = std::min(amin, dot(v, axis)), amax = std::max(amax, dot(v, axis));
+      for (Vec2 v : b) bmin = std::min(bmin, dot(v, axis)), bmax = std::max(bmax, dot(v, axis));
+      const double gap = std::max(bmin - amax, amin - bmax);
+      if (gap > 1e-9) return +1;
+      if (gap > -1e-9) deep = false;
+    }
+  }
+  return deep ? -1 : 0;
+}
+
+//! Obstacles of a plant: footprints (objects) and zones kept free, all
+//! rectangles (convex).
 struct Occupancy {
   std::vector<Polygon> solids, zones;
   std::vector<Rect> solid_boxes, zone_boxes;
   static bool hits(const Polygon& p, const std::vector<Polygon>& list,
                    const std::vector<Rect>& boxes) {
     const Rect r = rect_of(p);
-    for (std::size_t i = 0; i < list.size(); ++i)
-      if (boxes_meet(r, boxes[i]) && geometry::interiors_overlap(p, list[i])) return true;
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      if (!boxes_meet(r, boxes[i])) continue;
+      const int sat = convex_overlap(p, list[i]);
+      if (sat < 0 || (sat == 0 && geometry::interiors_overlap(p, list[i]))) return true;
+    }
     return false;
   }
   void add_solid(Polygon p) {
@@ -263,6 +288,19 @@ struct Occupancy {
     zones.push_back(std::move(p));
   }
 };
+
+//! Exact "inside the room", after a cheap rejection of polygons with a
+//! vertex clearly outside it.
+bool inside_room(const Polygon& p, const Polygon& room) {
+  for (Vec2 v : p) {
+    if (geometry::point_in_polygon(v, room)) continue;
+    double d = 1e300;
+    for (std::size_t i = 0; i < room.size(); ++i)
+      d = std::min(d, geometry::point_segment_distance(v, room[i], room[(i + 1) % room.size()]));
+    if (d > 1e-9) return false;
+  }
+  return geometry::polygon_inside(p, room);
+}
 
 Polygon local_rect(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
@@ -351,10 +389,12 @@ bool plant(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
     const Vec2 n = geometry::door_inward_normal(scene), d{n.y, -n.x}, c = scene.door.center;
     occ.add_zone({c - 1.2 * d, c + 1.2 * d, c + 1.2 * d + 2.2 * n, c - 1.2 * d + 2.2 * n});
   }
-  // Wall objects first, larger first.
+  // Toured objects first (they need their stopping zones), wall objects
+  // before the others, larger first.
   std::vector<std::size_t> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (items[a].toured != items[b].toured) return items[a].toured;
     if (items[a].kind->wall != items[b].kind->wall) return items[a].kind->wall;
     return items[a].depth * items[a].width > items[b].depth * items[b].width;
   });
@@ -366,7 +406,7 @@ bool plant(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
     for (int tr = 0; tr < kPlaceTries && !ok; ++tr) {
       o.pose = draw_pose(scene.room.polygon, it, rng);
       const Polygon fp = geometry::world_footprint(o);
-      if (!geometry::polygon_inside(fp, scene.room.polygon)) continue;
+      if (!inside_room(fp, scene.room.polygon)) continue;
       if (Occupancy::hits(fp, occ.solids, occ.solid_boxes) ||
           Occupancy::hits(fp, occ.zones, occ.zone_boxes))
         continue;
@@ -382,7 +422,7 @@ bool plant(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
       std::shuffle(sides.begin(), sides.end(), rng);
       for (Side s : sides) {
         Polygon zone = approach_zone(o, it.depth, it.width, s, scene.wheelchair);
-        if (!geometry::polygon_inside(zone, scene.room.polygon)) continue;
+        if (!inside_room(zone, scene.room.polygon)) continue;
         if (Occupancy::hits(zone, occ.solids, occ.solid_boxes)) continue;
         occ.add_zone(std::move(zone));
         occ.add_solid(fp);
@@ -486,7 +526,7 @@ void scramble(Scene& scene, std::mt19937_64& rng) {
         o.pose = {draw(rng, box.xmin, box.xmax), draw(rng, box.ymin, box.ymax),
                   draw(rng, -kPi, kPi)};
         const Polygon fp = geometry::world_footprint(o);
-        if (!geometry::polygon_inside(fp, room)) continue;
+        if (!inside_room(fp, room)) continue;
         if (pass == 0 && (Occupancy::hits(fp, occ.solids, occ.solid_boxes) ||
                           Occupancy::hits(fp, occ.zones, occ.zone_boxes)))
           continue;
