@@ -34,7 +34,7 @@ std::vector<RunSpec> generalization_runs(const StudyConfig& c) {
   std::vector<RunSpec> runs;
   const int buckets = c.quick ? 2 : 4;
   const int rooms = c.quick ? 2 : c.zoo_rooms;
-  const int seeds = std::min(c.seeds, c.quick ? 1 : 3);
+  const int seeds = std::min(c.seeds, c.quick ? 1 : 2);
   for (int b = 0; b < buckets; ++b)
     for (int r = 1; r <= rooms; ++r)
       for (int seed = 1; seed <= seeds; ++seed)
