@@ -78,6 +78,13 @@ constexpr Kind kKinds[] = {
     {"stool", 0.4, 0.4, false, kAll, 0.0, 1.5},
 };
 
+//! Fisher–Yates with uniform_index (std::shuffle's draws differ between
+//! standard libraries).
+template <class T>
+void shuffle(std::vector<T>& v, std::mt19937_64& rng) {
+  for (std::size_t i = v.size(); i > 1; --i) std::swap(v[i - 1], v[uniform_index(rng, i)]);
+}
+
 double draw(std::mt19937_64& rng, double lo, double hi) { return lo + (hi - lo) * uniform01(rng); }
 double cm(double x) { return std::round(100.0 * x) / 100.0; }
 
@@ -419,7 +426,7 @@ bool plant(Scene& scene, const std::vector<Item>& items, std::mt19937_64& rng) {
       std::vector<Side> sides;
       for (int s = 0; s < 4; ++s)
         if (o.approach->sides[s]) sides.push_back(static_cast<Side>(s));
-      std::shuffle(sides.begin(), sides.end(), rng);
+      shuffle(sides, rng);
       for (Side s : sides) {
         Polygon zone = approach_zone(o, it.depth, it.width, s, scene.wheelchair);
         if (!inside_room(zone, scene.room.polygon)) continue;
@@ -491,7 +498,7 @@ void add_activity(Scene& scene, const std::vector<Item>& items, std::mt19937_64&
     std::vector<std::string> to;
     for (const auto& id : ids)
       if (!self || id != *self) to.push_back(id);
-    std::shuffle(to.begin(), to.end(), rng);
+    shuffle(to, rng);
     to.resize(std::min(outs, to.size()));
     if (self && uniform01(rng) < 0.25) to.push_back(*self);  // staying
     std::map<std::string, double> r;
@@ -599,7 +606,7 @@ ZooRoom generate_room(const ZooOptions& options, int index) {
   {  // 3 to 10 of them are nodes of the AO graph
     std::vector<std::size_t> pick(items.size());
     for (std::size_t i = 0; i < pick.size(); ++i) pick[i] = i;
-    std::shuffle(pick.begin(), pick.end(), rng);
+    shuffle(pick, rng);
     pick.resize(std::min(items.size(), 3 + uniform_index(rng, 8)));
     for (std::size_t i : pick) items[i].toured = true;
   }
