@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "api/operations.h"
 
 #include <memory>
@@ -18,9 +19,10 @@ namespace hrs::api {
 std::optional<planning::ReuseOptions> choose_planner(const std::string& planner,
                                                      const std::optional<std::string>& reuse,
                                                      const ReuseRule& rule) {
-  if (planner != "baseline" && planner != "proposed")
-    throw InputError("--planner: unknown planner '" + planner + "' (baseline or proposed)");
-  if (reuse && planner != "proposed") throw InputError("--reuse needs --planner proposed");
+  if (planner != "baseline" && planner != "proposed" && planner != "default")
+    throw InputError("--planner: unknown planner '" + planner +
+                     "' (baseline, or default for the proposed planner)");
+  if (reuse && planner == "baseline") throw InputError("--reuse needs --planner default");
   if (planner == "baseline") return std::nullopt;
   const std::string list = reuse.value_or(rule.fallback);
   const std::string allowed = rule.allowed;
@@ -128,14 +130,47 @@ std::string plan_tour_json(const geometry::Scene& scene, const std::vector<std::
   return planning::tour_json(tour);
 }
 
+optimize::PlannerConfig design_planner(const std::string& planner,
+                                       const std::optional<std::string>& reuse,
+                                       const std::optional<std::string>& disable) {
+  optimize::PlannerConfig c = parse_planner(planner, "--planner");
+  if (reuse) {
+    if (!c.proposed)
+      throw InputError("--reuse: the " + c.preset +
+                       " preset plans each leg with the RRT, which has no reuse techniques "
+                       "(use --planner default or paper)");
+    c.reuse = parse_reuse(*reuse);
+  }
+  if (disable && *disable != "none") {
+    for (std::size_t start = 0; start <= disable->size();) {
+      const std::size_t end = std::min(disable->find(',', start), disable->size());
+      const std::string name = disable->substr(start, end - start);
+      start = end + 1;
+      bool known = false;
+      for (const optimize::PlannerConfig::Switch& s : optimize::PlannerConfig::switches()) {
+        if (name != s.name) continue;
+        c.*s.on = false;
+        known = true;
+      }
+      if (!known) {
+        std::string list;
+        for (const optimize::PlannerConfig::Switch& s : optimize::PlannerConfig::switches())
+          list += std::string(list.empty() ? "" : ", ") + s.name;
+        throw InputError("--disable '" + *disable + "': unknown item '" + name +
+                         "' (expected none or a comma list of " + list + ")");
+      }
+    }
+  }
+  return c;
+}
+
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
-                                       const std::optional<planning::ReuseOptions>& reuse) {
+                                       const optimize::PlannerConfig& planner) {
   optimize::DesignOptions options;
   options.seed = seed;
   options.iterations = iterations;
   options.threads = threads;
-  options.proposed = reuse.has_value();
-  if (reuse) options.reuse = *reuse;
+  options.planner = planner;
   return options;
 }
 

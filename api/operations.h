@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The operations behind `hrspace plan`, `hrspace tour` and `hrspace design`
 // as plain functions: the command line (cli/) and the Python module
@@ -26,9 +27,9 @@ struct ReuseRule {
 inline constexpr ReuseRule kPlanReuse{"samples,steering", "samples,steering"};
 inline constexpr ReuseRule kTourReuse{"samples,steering,paths,shortcuts,budget,proofs",
                                       "samples,steering,paths"};
-inline constexpr ReuseRule kDesignReuse{"all,proofs", "all"};
 
-//! `planner` is "baseline" or "proposed"; `reuse` (proposed only) a --reuse
+//! For `hrspace plan` and `hrspace tour`: `planner` is "baseline" or
+//! "default" ("proposed" is read the same); `reuse` (not baseline) a --reuse
 //! list. nullopt for the baseline, else the proposed planner's techniques.
 //! InputError, with the command line's wording (--planner, --reuse), for an
 //! unknown planner, reuse without the proposed planner, or a technique
@@ -71,10 +72,20 @@ std::string plan_leg_json(const geometry::Scene& scene, const geometry::Pose2& f
 std::string plan_tour_json(const geometry::Scene& scene, const std::vector<std::string>& sequence,
                            std::uint64_t seed, const std::optional<planning::ReuseOptions>& reuse);
 
+//! The planner of a design from the front ends' options: `planner` a
+//! parse_planner() text (--planner, default "default"), `reuse` a
+//! parse_reuse() list that replaces the techniques (proposed presets only),
+//! `disable` "none" or a comma list of design-loop switches to turn off.
+//! hrs::InputError naming the option for anything else. The command line and
+//! the Python module both call this, so their messages are the same.
+optimize::PlannerConfig design_planner(const std::string& planner,
+                                       const std::optional<std::string>& reuse,
+                                       const std::optional<std::string>& disable);
+
 //! The options of one design run with the command's defaults (the fields
-//! cli/cmd_optimize.cpp sets from --seed, --iterations, --threads, --planner
-//! and --reuse); python_design_test checks that both give the same files.
+//! cli/cmd_optimize.cpp sets from --seed, --iterations, --threads and the
+//! planner); python_design_test checks that both give the same files.
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
-                                       const std::optional<planning::ReuseOptions>& reuse);
+                                       const optimize::PlannerConfig& planner);
 
 }  // namespace hrs::api

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The --reuse list syntax: text naming the proposed planner's techniques
 // (planning::ReuseOptions) as the command line, the Python module, the
@@ -7,6 +8,7 @@
 
 #include <string_view>
 
+#include "optimize/planner_config.h"
 #include "planning/reuse_options.h"
 
 namespace hrs::api {
@@ -18,5 +20,16 @@ namespace hrs::api {
 //! (budget=500, backoff=10). hrs::InputError, one line naming the item, for
 //! anything else. parse_reuse(o.names()) gives back o.
 planning::ReuseOptions parse_reuse(std::string_view list);
+
+//! Parses a planner configuration, "PRESET[,ITEM...]" (optimize/planner_config.h):
+//! a preset (default, baseline, paper, literal; "proposed" is read as
+//! default), then items applied left to right: a design-loop switch
+//! (goalskip, refuse, escape, early) or, for the proposed planner's presets,
+//! a technique as parse_reuse() reads it. -NAME turns a switch off.
+//! hrs::InputError naming `option` and the item for anything else, and for
+//! a technique with a preset that plans each leg by the RRT.
+//! parse_planner(c.name()) gives back c.
+optimize::PlannerConfig parse_planner(std::string_view text,
+                                      std::string_view option = "--planner");
 
 }  // namespace hrs::api

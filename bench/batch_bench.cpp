@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The C++ side of the Python module's benchmark (docs/BENCHMARKS.md,
 // "Python bindings"): is_free over 10^6 poses in one loop, as
 // hrspace.CSpace.is_free runs it for an (N, 3) array (bench/python_is_free.py

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Geometry micro-benchmarks on the bedroom scene: point query, straight and
 // arc checks, and the incremental update after one object translates or
 // rotates (docs/design-notes.md "Performance"). Run:

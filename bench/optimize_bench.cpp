@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Benchmarks of optimize/: one full bedroom design (paper §VI: 700
 // iterations, M = 10; the paper reports 3–5 min per design with planning
 // 96 % of it) and the per-iteration pieces that are not planning.
@@ -27,6 +28,7 @@ void BM_BedroomDesign(benchmark::State& state) {
   optimize::DesignResult r;
   for (auto _ : state) {
     optimize::DesignOptions options;
+    options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
     options.seed = 1;
     options.iterations = static_cast<int>(state.range(0));
     options.threads = static_cast<int>(state.range(1));

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Planning benchmark (issue 4): per-leg time and success of our baseline RRT
 // (§III-B) on fixed sets of bedroom legs, in the same run as OMPL's RRT (goal
 // bias 0.8, range = our n · step) and RRTConnect on a ReedsSheppStateSpace

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Baseline vs proposed planner on the same planning problems (paper §V-VI).
 // A design run's planners visit different layouts (a reused path has another
 // length than a fresh one, so costs and Metropolis decisions differ), which
@@ -55,8 +56,8 @@ void replay(benchmark::State& state, const Recording* rec, const std::string& co
       optimize::DesignOptions o;
       o.seed = s + 1;
       o.threads = threads;
-      o.proposed = config != "baseline";
-      if (o.proposed) o.reuse = api::parse_reuse(config);
+      o.planner = api::parse_planner(config == "baseline" ? "baseline" : "default");
+      if (o.planner.proposed) o.planner.reuse = api::parse_reuse(config);
       const optimize::ReplayResult r = optimize::replay_planning(rec->scene, rec->runs[s], o);
       planning += r.planning_s;
       found += r.tours_found;
@@ -109,6 +110,7 @@ int main(int argc, char** argv) {
     rec.scene = geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + room + ".json");
     for (int seed = 1; seed <= seeds; ++seed) {
       optimize::DesignOptions o;
+      o.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
       o.seed = static_cast<std::uint64_t>(seed);
       o.iterations = iterations;
       o.threads = threads;

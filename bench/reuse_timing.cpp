@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Baseline vs proposed planner (paper §VI, Fig. "time"): designs of several
 // rooms from the same seeds, planning time, total time and final cost per
 // design, plus an ablation of each reuse technique alone (§V). Not a Google
@@ -100,8 +101,8 @@ int main(int argc, char** argv) {
         o.seed = static_cast<std::uint64_t>(seed);
         o.iterations = iterations;
         o.threads = threads;
-        o.proposed = config != "baseline";
-        if (o.proposed) o.reuse = api::parse_reuse(config);
+        o.planner = api::parse_planner(config == "baseline" ? "baseline" : "default");
+        if (o.planner.proposed) o.planner.reuse = api::parse_reuse(config);
         const optimize::DesignResult r = optimize::design(scene, o);
         const auto& c = r.counters;
         csv << room << ",\"" << config << "\"," << seed << ',' << iterations << ',' << r.threads

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reeds–Shepp micro-benchmarks (paper §III-B, §V-A): our exact shortest
 // length and path against OMPL's ReedsSheppStateSpace::distance on the same
 // random pairs, the RS-decomposition look-up, and sampling a path.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/args.h"
 
 #include <charconv>
@@ -33,9 +34,13 @@ Args::Args(const std::vector<std::string>& argv, std::set<std::string> options,
           if (i + 1 >= argv.size()) throw InputError("option --" + name + " needs a value");
           value = argv[++i];
         }
+        if (values_.count(name))
+          throw InputError("option --" + name + " given twice ('" + values_[name] + "' and '" +
+                           value + "'): give it once");
         values_[name] = value;
       } else if (flags.count(name) && !has_value) {
-        flags_set_.insert(name);
+        if (!flags_set_.insert(name).second)
+          throw InputError("option --" + name + " given twice: give it once");
       } else {
         throw InputError("unknown option --" + name + " (see --help)");
       }
@@ -120,7 +125,8 @@ std::string read_input(const std::string& path) {
     return text;
   }
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, expected a file");
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path + ": is a directory, expected a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open file (missing or unreadable)");
   std::ostringstream buffer;
@@ -173,7 +179,8 @@ std::vector<std::vector<double>> read_numeric_csv(const std::string& text,
     }
     std::vector<double> row(columns.size());
     for (std::size_t i = 0; i < columns.size(); ++i) {
-      const std::string where = at + ", field " + std::to_string(i + 1) + " (" + columns[i].name + ")";
+      const std::string where =
+          at + ", field " + std::to_string(i + 1) + " (" + columns[i].name + ")";
       if (!to_double(fields[i], row[i]))
         throw InputError(where + ": not a finite number: '" + fields[i] + "'");
       if (std::abs(row[i]) > columns[i].max_abs)

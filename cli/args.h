@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Minimal command-line parsing for the hrspace subcommands: positional
 // arguments, `--name value` options and `--flag` switches, each declared up
@@ -26,7 +27,9 @@ namespace hrs::cli {
 class Args {
  public:
   //! `options` take a value, `flags` do not; anything else starting with
-  //! "--" is an InputError. `--help`/`-h` is always accepted.
+  //! "--" is an InputError, and so is an option or flag given twice (no
+  //! option is repeatable: the second value would silently win).
+  //! `--help`/`-h` is always accepted.
   Args(const std::vector<std::string>& argv, std::set<std::string> options,
        std::set<std::string> flags = {});
 

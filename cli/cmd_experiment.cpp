@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace experiment`: the experiments harness on the command line
 // (experiments/study.h): one study, every study, or a merge of shard outputs.
 
@@ -7,6 +8,8 @@
 #include <csignal>
 #include <filesystem>
 #include <iostream>
+#include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -44,10 +47,16 @@ std::string usage_text() {
       "hrspace experiment merge STUDY|all --out DIR SHARD_DIR...\n"
       "hrspace experiment list\n\n"
       "Runs a study of the paper's experiments (§VI) and writes DIR/STUDY/runs.csv (one row\n"
-      "per run: parameters, measures, commit, CPU, threads), DIR/STUDY/summary.csv (mean, sd,\n"
-      "n per group, ratios) and the study's extra tables and designs. Runs already stored\n"
-      "under DIR are skipped, so a killed sweep resumes where it stopped.\n"
-      "paper_figures/plot.py draws the figures and REPRODUCTION.md from DIR.\n\n"
+      "per run: parameters, identity, measures, CPU), DIR/STUDY/summary.csv (mean, sd, n per\n"
+      "group, ratios) and the study's extra tables and designs. A run's identity is all\n"
+      "that determines it besides its parameters: version, commit, iterations, threads,\n"
+      "quick, the digests of the scenes it reads, its planner's switches. Runs already\n"
+      "stored under DIR with the same identity are skipped, so a killed sweep resumes where\n"
+      "it stopped; a stored run of another identity is refused (exit 2, naming the column):\n"
+      "use another --out. merge refuses shards that differ in anything but --shard.\n"
+      "paper_figures/plot.py draws the figures and REPRODUCTION.md from DIR. Each option is\n"
+      "given at most once. Every scene is checked before the first run; exit 2 for bad\n"
+      "input, 1 for failed runs or failed writes (the message names the path and reason).\n\n"
       "  --out DIR       root of the outputs (required)\n"
       "  --seeds N       seeds 1..N (default 10; --quick: 2)\n"
       "  --iterations N  annealing iterations per design (default 700; --quick: 100)\n"
@@ -55,7 +64,8 @@ std::string usage_text() {
       "  --jobs J        designs run at once (default 1)\n"
       "  --shard i/n     run only the i-th of n deterministic parts (merge them afterwards)\n"
       "  --quick         the smallest sweep that writes every output (tests, smoke runs)\n"
-      "  --rooms LIST    rooms instead of the study's own: scene names or .json paths\n"
+      "  --rooms LIST    rooms instead of the study's own: scene names or .json paths, of\n"
+      "                  distinct file names (runs are keyed by them)\n"
       "  --scenes DIR    where scene names are looked up (default: the source's scenes/)\n"
       "  --zoo-seed S    generalization: seed of the room zoo (default 1)\n"
       "  --zoo-rooms N   generalization: rooms per object-count bucket (default 5)\n\n"
@@ -102,7 +112,8 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
 //! The study configuration the options describe (--out required).
 experiments::StudyConfig study_config(const Args& args) {
   const auto out = args.get("out");
-  if (!out || out->empty()) throw InputError("--out DIR is required (see --help)");
+  if (!out) throw InputError("--out DIR is required (see --help)");
+  if (out->empty()) throw InputError("--out: empty directory name (give the root of the outputs)");
   experiments::StudyConfig config;
   config.quick = args.flag("quick");
   config.seeds = static_cast<int>(args.integer("seeds", config.quick ? 2 : 10, 1, 10000));
@@ -115,20 +126,52 @@ experiments::StudyConfig study_config(const Args& args) {
 #ifdef HRSPACE_SOURCE_DIR
   config.scenes_dir = std::filesystem::path(HRSPACE_SOURCE_DIR) / "scenes";
 #endif
-  if (const auto s = args.get("scenes")) config.scenes_dir = *s;
+  if (const auto s = args.get("scenes")) {
+    std::error_code ec;
+    if (s->empty()) throw InputError("--scenes: empty directory name");
+    if (!std::filesystem::is_directory(*s, ec))
+      throw InputError("--scenes " + *s + ": " +
+                       (std::filesystem::exists(*s, ec) ? "not a directory" : "no such directory"));
+    config.scenes_dir = *s;
+  }
   if (const auto r = args.get("rooms")) {
     config.rooms = split_list(*r, "--rooms");
+    // A room's name in run keys is its file stem: two entries of the same
+    // name would store their runs under the same keys.
+    std::map<std::string, std::filesystem::path> by_name;
     for (const auto& room : config.rooms) {
-      const std::filesystem::path p = room.ends_with(".json")
-                                          ? std::filesystem::path(room)
-                                          : config.scenes_dir / (room + ".json");
-      if (!std::filesystem::is_regular_file(p))
+      const std::filesystem::path p = experiments::scene_path(config, room);
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(p, ec))
         throw InputError("--rooms: '" + room + "': no scene file " + p.string());
-      // A broken scene is one message now, not one failed run per seed later.
-      geometry::require_sequences(geometry::load_scene(p.string()), p.string());
+      const std::string name = p.stem().string();
+      const auto [it, fresh] = by_name.emplace(name, p);
+      if (!fresh)
+        throw InputError("--rooms: " + it->second.string() + " and " + p.string() +
+                         (std::filesystem::equivalent(it->second, p, ec)
+                              ? " are the same scene, named twice"
+                              : " are two scenes of the same name '" + name +
+                                    "' (runs are keyed by the file name): rename one"));
     }
   }
   return config;
+}
+
+//! Checks every scene the chosen studies read before any run starts: each
+//! exists (run_identity digests it) and each room of a run is a valid scene
+//! with sequences. A bad scene is one message now, not one failed run per
+//! seed later.
+void check_scenes(const std::vector<const experiments::Study*>& chosen,
+                  const experiments::StudyConfig& config) {
+  std::set<std::string> checked;
+  for (const experiments::Study* s : chosen)
+    for (const experiments::RunSpec& spec : s->runs(config)) {
+      experiments::run_identity(*s, spec, config);
+      const auto room = spec.params.get("room");
+      if (!room || !checked.insert(*room).second) continue;
+      const std::string p = experiments::scene_path(config, *room).string();
+      geometry::require_sequences(geometry::load_scene(p), p);
+    }
 }
 
 //! --shard i/n as (i, n); (1, 1) without the option.
@@ -180,6 +223,7 @@ int run_command(const Args& args, const experiments::StudyConfig& config) {
   options.progress = isatty(STDERR_FILENO) != 0;
   options.stop = &g_stop;
   const std::vector<const experiments::Study*> chosen = select(args.positional()[0]);
+  check_scenes(chosen, config);
 
   g_stop.store(false);
   struct sigaction action {};

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace generate`: the room zoo (experiments/room_zoo.h) on the command
 // line: random rooms that are tourable by construction, each written with
 // its witness (the planted layout).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace validate` and `hrspace collide`: the geometry layer on the command line.
 
 #include <cstdio>
@@ -24,6 +25,8 @@ int cmd_validate(const Argv& argv) {
   }
   args.expect_positional(1, usage);
   const geometry::Scene s = geometry::load_scene(args.positional()[0]);
+  for (const std::string& w : geometry::degree_like_angles(s, args.positional()[0]))
+    std::cerr << "hrspace validate: warning: " << w << "\n";
   std::size_t edges = 0, fixed = 0;
   for (const auto& [from, row] : s.activity.transitions) edges += row.size();
   for (const auto& o : s.objects) fixed += o.fixed;

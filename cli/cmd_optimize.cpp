@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace design`: the layout optimizer of paper §III (optimize/design.h)
 // with its outputs (optimize/design_io.h), a progress bar on a terminal and
 // Ctrl-C, SIGTERM or SIGHUP writing the best design so far (exit 128 + the
@@ -94,9 +95,9 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
   return static_cast<int>(stale.size());
 }
 
-constexpr const char* kDesignUsage =
+constexpr const char* kDesignUsageHead =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
-    "                     [--planner baseline|proposed] [--reuse LIST] [--weights W]\n"
+    "                     [--planner PRESET[,ITEM...]] [--reuse LIST] [--weights W]\n"
     "                     [--disable LIST]\n\n"
     "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
     "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
@@ -109,44 +110,14 @@ constexpr const char* kDesignUsage =
     "  --weights W     override the scene's weights: L,R,C (path length, rotation, clearance)\n"
     "                  or L,R,C,D,A (and interior distance, angle); each finite and >= 0.\n"
     "                  --weights 0,0,0 designs without the wheelchair (paper Fig. 1)\n"
-    "  --planner P     baseline (default: RRT per leg, §III-B) or proposed (reuse, §V)\n"
-    "  --reuse LIST    techniques of the proposed planner, for ablations: all (default),\n"
-    "                  none (= baseline exactly), or a comma list of\n"
-    "                    samples   RRT samples from the RS-decomposition (§V-A)\n"
-    "                    steering  RS look-ups through the decomposition (§V-A)\n"
-    "                    paths     path database, within and across iterations (§V-B)\n"
-    "                    trees     RRT trees kept while their root barely moves (§V-C)\n"
-    "                    failures  a failed leg is not re-planned while no object moved\n"
-    "                              within reach of its RRT's nodes (beyond the paper)\n"
-    "                    shortcuts every path stored is shortened first (beyond the paper)\n"
-    "                    budget    opt-in, not in all: fresh plans stop after 300 RRT iterations,\n"
-    "                              not 3000 (budget=N: after N); hard legs fail and the tour\n"
-    "                              tries other poses (beyond the paper; costs tours)\n"
-    "                    metrics   a found leg's clearance metrics and re-certification are\n"
-    "                              kept and updated for the objects that moved, not redone\n"
-    "                              (beyond the paper; exact)\n"
-    "                    backoff   opt-in, not in all: a leg that keeps failing gets half the\n"
-    "                              RRT budget at each\n"
-    "                              failure, down to 120 iterations (backoff=N: down to N); the\n"
-    "                              whole budget again once found (beyond the paper)\n"
-    "                    speculate a tour waiting for a leg another thread is planning plans\n"
-    "                              its own next candidate meanwhile (beyond the paper; the\n"
-    "                              same results, only the work changes)\n"
-    "                    proofs    opt-in, not in all: a leg still unplanned after 300 RRT\n"
-    "                              iterations whose ends a certified grid separates fails\n"
-    "                              at once (beyond the paper; rarely pays, docs/planner.md)\n"
-    "                  e.g. --reuse all,proofs\n"
-    "  --disable LIST  switch off additions of the design loop, for ablations (beyond the\n"
-    "                  paper, all on by default; docs/optimize.md), a comma list of\n"
-    "                    refuse  a leg still unfound after 300 RRT iterations whose ends the\n"
-    "                            certified free grid separates stops there (the baseline's\n"
-    "                            tours are the same either way)\n"
-    "                    escape  unfound tours are charged by how walled off their stops are,\n"
-    "                            the walling objects are moved first, and no move may leave\n"
-    "                            an object of a sequence without a free goal pose\n"
-    "                    early   a proposal stops being planned once a lower bound of its\n"
-    "                            cost is rejected (the same decisions)\n"
-    "DIR is created and checked writable before any work. Each file is written to a\n"
+    "  --planner P     a preset (default: default), then optional comma items that turn a\n"
+    "                  switch or technique on (NAME), off (-NAME) or set it (NAME=N),\n"
+    "                  e.g. --planner baseline,-escape or --planner default,-trees\n";
+
+constexpr const char* kDesignUsageTail =
+    "  --reuse LIST    replaces the proposed planner's techniques: all, none or a comma list\n"
+    "  --disable LIST  turns design-loop switches off: none or a comma list (ablations)\n"
+"DIR is created and checked writable before any work. Each file is written to a\n"
     "temporary file and renamed into place once all of a design's files are written.\n"
     "Outputs of an earlier run that this run does not rewrite (numbered design\n"
     "directories beyond K, a stale contact sheet) are removed at the end, with a note.\n"
@@ -199,9 +170,10 @@ std::function<void(const optimize::DesignStep&)> progress_bar(bool tty, long ite
 //! One line per design on stdout.
 void print_summary(const std::filesystem::path& dir, const optimize::DesignResult& result) {
   std::printf(
-      "%s: cost %.4f -> %.4f, tours found %d/%d, acceptance %.2f, %.1f s (planning %.0f%%)%s%s\n",
+      "%s: cost %.4f -> %.4f, tours found %d/%d, preferences met %d/%d, acceptance %.2f, %.1f s "
+      "(planning %.0f%%)%s%s\n",
       dir.string().c_str(), result.initial.total(), result.final.total(), result.final.tours_found,
-      result.final.tours_total,
+      result.final.tours_total, result.preferences.met, result.preferences.total,
       result.proposals ? static_cast<double>(result.accepted) / result.proposals : 0.0,
       result.time_total_s,
       result.time_total_s > 0 ? 100.0 * result.time_planning_s / result.time_total_s : 0.0,
@@ -209,35 +181,12 @@ void print_summary(const std::filesystem::path& dir, const optimize::DesignResul
       result.stopped ? "  (interrupted)" : "");
 }
 
-//! --disable LIST: switches off additions of the design loop.
-void apply_disable(const std::optional<std::string>& list, optimize::DesignOptions& options) {
-  if (!list) return;
-  std::size_t start = 0;
-  while (start <= list->size()) {
-    const std::size_t comma = std::min(list->find(',', start), list->size());
-    const std::string name = list->substr(start, comma - start);
-    if (name == "refuse") {
-      options.refuse_impossible = false;
-    } else if (name == "escape") {
-      options.escape = false;
-    } else if (name == "early") {
-      options.early_reject = false;
-    } else if (name != "none" || list->find(',') != std::string::npos) {
-      throw InputError("--disable '" + *list + "': unknown item '" + name +
-                       "' (expected none or a comma list of refuse, escape, early)");
-    }
-    start = comma + 1;
-  }
-}
-
 //! What one `hrspace design` command asks for.
 struct DesignRequest {
   std::string scene_path;  //!< a scene file, or "-" for stdin
   std::string out;
-  std::optional<planning::ReuseOptions> reuse;  //!< set: the proposed planner
-  std::string planner;                          //!< "baseline" or "proposed"
+  optimize::PlannerConfig planner;  //!< --planner, --reuse and --disable
   long seed = 1, iterations = 700, designs = 1, threads = 0;
-  std::optional<std::string> disable;
 };
 
 //! The command's arguments, checked in this order (the first bad one is reported).
@@ -247,17 +196,12 @@ DesignRequest design_request(const Args& args) {
   if (!out) throw InputError("--out DIR is required (see --help)");
   DesignRequest r;
   r.out = *out;
-  r.reuse = planner_option(args, "all,budget,backoff,proofs", "all");
-  r.planner = r.reuse ? "proposed" : "baseline";
+  r.planner = api::design_planner(args.get_or("planner", "default"), args.get("reuse"),
+                                  args.get("disable"));
   r.seed = args.integer("seed", 1, 0, 1L << 53);
   r.iterations = args.integer("iterations", 700, 0, 100000000);
   r.designs = args.integer("designs", 1, 1, 1000);
   r.threads = args.integer("threads", 0, 0, 1024);
-  r.disable = args.get("disable");
-  {
-    optimize::DesignOptions check;  // refuse a bad --disable before any work
-    apply_disable(r.disable, check);
-  }
   r.scene_path = args.positional()[0];
   return r;
 }
@@ -269,6 +213,8 @@ geometry::Scene prepare_design(const DesignRequest& r, const Args& args) {
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
   geometry::require_sequences(scene, path == "-" ? "stdin" : path);
+  for (const std::string& w : geometry::degree_like_angles(scene, path == "-" ? "stdin" : path))
+    std::cerr << "hrspace design: warning: " << w << "\n";
   // The output directory before any work: an unwritable --out loses nothing.
   optimize::require_writable_directory(r.out);
   remove_stale_outputs(r.out, r.designs > 1, r.designs,
@@ -318,8 +264,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   // The same options as the Python module's design() (api/operations.h).
   optimize::DesignOptions options =
       api::design_options(static_cast<std::uint64_t>(r.seed + d), static_cast<int>(r.iterations),
-                          static_cast<int>(r.threads), r.reuse);
-  apply_disable(r.disable, options);
+                          static_cast<int>(r.threads), r.planner);
   const auto progress = progress_bar(
       tty, r.iterations, r.designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
   optimize::DesignResult result;
@@ -337,7 +282,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   }
   if (tty) std::cerr << "\r\033[K" << std::flush;
   const std::filesystem::path dir = design_dir(r, d);
-  optimize::RunInfo info{options.seed, r.planner, static_cast<int>(r.iterations)};
+  optimize::RunInfo info{options.seed, r.planner.name(), static_cast<int>(r.iterations)};
   optimize::write_design(result, info, dir);
   svgs.push_back(
       optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
@@ -366,7 +311,8 @@ int cmd_design(const Argv& argv) {
   const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
                          "weights", "disable"});
   if (args.help()) {
-    std::cout << "usage: " << kDesignUsage;
+    std::cout << "usage: " << kDesignUsageHead << optimize::PlannerConfig::help()
+              << kDesignUsageTail;
     return 0;
   }
   const DesignRequest request = design_request(args);

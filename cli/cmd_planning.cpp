@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace plan` and `hrspace tour`: the planning layer on the command line
 // (one leg of the baseline RRT, §III-B; one tour by branch and bound, §III-C).
 // The work itself is in api/operations.h, shared with the Python module.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace rs`: shortest Reeds–Shepp paths for pose pairs (paper §III-B),
 // CSV in (x0,y0,t0,x1,y1,t1, header optional), CSV out (length,word,segments).
 

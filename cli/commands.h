@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The hrspace subcommands. Each takes the arguments after its name, writes to
 // stdout/stderr and returns the exit status; InputError escapes to main(),

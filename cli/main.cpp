@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace: the command-line entry point. Dispatches to the subcommands of
 // docs/design-notes.md "The hrspace command"; exit 0 success, 2 bad input, 1 internal.
 
@@ -11,6 +12,7 @@
 
 #include "cli/commands.h"
 #include "geometry/error.h"
+#include "geometry/version.h"
 
 namespace {
 
@@ -33,7 +35,8 @@ constexpr Command kCommands[] = {
 };
 
 void usage(std::ostream& out) {
-  out << "usage: hrspace <command> [args]   (hrspace <command> --help for details)\n\n"
+  out << "usage: hrspace <command> [args]   (hrspace <command> --help for details)\n"
+         "       hrspace --version\n\n"
          "hrspace designs rooms shared by people and a self-driving wheelchair.\n\ncommands:\n";
   for (const auto& c : kCommands) {
     std::string n = c.name;
@@ -68,6 +71,14 @@ int main(int argc, char** argv) {
   const std::string name = argv[1];
   if (name == "--help" || name == "-h" || name == "help") {
     usage(std::cout);
+    return checked_output(name, 0);
+  }
+  if (name == "--version" || name == "version") {
+    if (argc > 2) {
+      std::cerr << "hrspace --version: takes no arguments, got '" << argv[2] << "'\n";
+      return 2;
+    }
+    std::cout << hrs::version_line() << "\n";
     return checked_output(name, 0);
   }
   const hrs::cli::Argv args(argv + 2, argv + argc);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The room zoo (experiments/room_zoo.h): furniture, shapes, preferences
 // read off the planted layout, the AO graph, the witness check and the
 // attempts loop. The plant and the scramble are in room_zoo_plant.cpp.
@@ -299,6 +300,7 @@ bool is_partition(const Object& object) { return object.id.rfind(kPartitionPrefi
 
 WitnessCheck check_layout(const Scene& scene, int threads) {
   optimize::DesignOptions o;
+  o.planner = optimize::PlannerConfig::from_preset("baseline");
   o.seed = 1;
   o.iterations = 0;
   o.threads = threads;

@@ -1,4 +1,5 @@
 #pragma once
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The room zoo (`hrspace generate`, the `generalization` study): random
 // scenes that are tourable by construction.
 //

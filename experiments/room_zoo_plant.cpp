@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plant and the scramble of the room zoo (experiments/room_zoo_plant.h):
 // rejection sampling of rectangles against the room (exact predicates after
 // cheap double filters) and against each other and the kept-free zones.

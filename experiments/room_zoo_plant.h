@@ -1,4 +1,5 @@
 #pragma once
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Internal to experiments/room_zoo*.cpp, not part of the API: the furniture
 // items of a zoo room, the seeded draws the generator shares, and the
 // placement of the items (the plant, room_zoo_plant.cpp) and of the input

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Aggregation of experiment runs: mean, sample standard deviation and count
 // per group of runs, and ratios of group means against a reference group

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studies of what the designs look like: small_room (§VI-B), ao_graph
 // (§VI-C), designs (Fig. "cover3", Fig. 1), and beyond the paper hard_rooms
 // and design_loop. docs/experiments.md says what each measures.
@@ -201,7 +202,7 @@ std::vector<RunSpec> loop_runs(const StudyConfig& c) {
 RunOutput loop_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene scene = load_room(context.config, param(spec, "room"));
   optimize::DesignOptions o = run_options(spec, context);
-  if (param(spec, "loop") == "off") o.refuse_impossible = o.early_reject = false;
+  if (param(spec, "loop") == "off") o.planner.refuse = o.planner.escape = o.planner.early = false;
   return design_output(optimize::design(scene, o, context.stop));
 }
 

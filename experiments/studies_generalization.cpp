@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The generalization study (beyond the paper): designs in rooms of the room
 // zoo (experiments/room_zoo.h), random rooms of 4 to 40 objects that are
 // tourable by construction, by the proposed planner ("all") and the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The method study: the figures of the method rather than of a result, the
 // AO graphs (Fig. "actiongraph") and the goal poses and one leg of a designed
 // layout (Fig. "goal").
@@ -42,15 +43,17 @@ void add_goal_rows(Table& goals, const planning::TourPlanner& planner, const std
   }
 }
 
-//! The edges of the AO graph of each room (Fig. "actiongraph"): the
-//! paper's rooms, or --rooms.
+//! The rooms whose AO graphs the method run draws: the paper's, or --rooms.
+std::vector<std::string> graph_rooms(const StudyConfig& config) {
+  return config.rooms.empty()
+             ? std::vector<std::string>{"bedroom", "office", "office_round_table", "living_room"}
+             : config.rooms;
+}
+
+//! The edges of the AO graph of each room (Fig. "actiongraph").
 Table ao_edges(const StudyConfig& config) {
   Table edges;
-  const std::vector<std::string> graphs =
-      config.rooms.empty()
-          ? std::vector<std::string>{"bedroom", "office", "office_round_table", "living_room"}
-          : config.rooms;
-  for (const auto& name : graphs) {
+  for (const auto& name : graph_rooms(config)) {
     const geometry::Scene s = load_room(config, name);
     for (const auto& [from, row] : s.activity.transitions)
       for (const auto& [to, p] : row) {
@@ -119,15 +122,30 @@ Table method_summary(const Table& runs) {
   return summarize_table(runs, {"room"}, {"leg_found", "leg_length_m"});
 }
 
+//! The method run reads its room, designs with the planner "all" and draws
+//! the AO graphs of graph_rooms(): each scene's digest is in its identity.
+Row method_identity(const RunSpec& spec, const StudyConfig& config) {
+  Row id = shared::run_identity(spec, config);
+  id.merge(shared::planner_identity(config, "all"));
+  std::string graphs;
+  for (const auto& room : graph_rooms(config))
+    graphs +=
+        (graphs.empty() ? "" : ";") + room_label(room) + "=" + shared::scene_digest(config, room);
+  id.set("graph_digests", graphs);
+  return id;
+}
+
 }  // namespace
 
 Study shared::method_study() {
-  return {"method",
+  Study s{"method",
           "Fig. \"actiongraph\" and Fig. \"goal\"",
           "AO graphs; goal poses around an object and one leg",
           method_runs,
           method_run,
           method_summary};
+  s.identity = method_identity;
+  return s;
 }
 
 }  // namespace hrs::experiments

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The studies of how fast the planners are: timing (§VI-A, Fig. "time"),
 // rs_decomposition (§V-A, Fig. "partition") and rrt_iterations (§V-C,
 // Fig. "rrt-it"). docs/experiments.md says what each measures.
@@ -150,7 +151,7 @@ std::vector<RunSpec> rrt_runs(const StudyConfig& c) {
 RunOutput rrt_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene scene = load_room(context.config, param(spec, "room"));
   optimize::DesignOptions o = run_options(spec, context);
-  if (const auto t = spec.params.get("tree_max_nodes")) o.reuse.tree_max_nodes = std::stoi(*t);
+  if (const auto t = spec.params.get("tree_max_nodes")) o.planner.reuse.tree_max_nodes = std::stoi(*t);
   const optimize::DesignResult r = optimize::design(scene, o, context.stop);
   RunOutput out = design_output(r);
   if (out.stopped) return out;
@@ -192,12 +193,20 @@ Study shared::timing_study() {
 }
 
 Study shared::rs_decomposition_study() {
-  return {"rs_decomposition",
+  Study s{"rs_decomposition",
           "§V-A's -40 %, Fig. \"partition\", the 48 regions",
           "RS-decomposition: regions and word accuracy; samples+steering vs baseline on replays",
           rsd_runs,
           rsd_run,
           rsd_summary};
+  // A regions run has no room parameter but sizes its box by the first room.
+  s.identity = [](const RunSpec& spec, const StudyConfig& config) {
+    Row id = shared::run_identity(spec, config);
+    if (param(spec, "kind") == "regions")
+      id.set("scene_digest", shared::scene_digest(config, rooms_of(config, {"bedroom"}).front()));
+    return id;
+  };
+  return s;
 }
 
 Study shared::rrt_iterations_study() {

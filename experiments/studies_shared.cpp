@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the studies share (experiments/studies_shared.h): the planners they
 // compare, rooms, run keys and parameters, and the design or replay run that
 // most studies make.
@@ -19,22 +20,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-//! The planners the studies compare.
+//! The planners the studies compare: a name in run keys and tables, and the
+//! planner text (api::parse_planner) it stands for.
 struct PlannerSpec {
   const char* name;
-  const char* reuse;  //!< nullptr: the baseline RRT; else api::parse_reuse list
-  bool literal;       //!< the paper's literal baseline: tried goal nodes are not skipped
-  const char* what;
+  const char* config;
 };
 
 constexpr PlannerSpec kPlanners[] = {
-    {"literal", nullptr, true, "the paper's baseline RRT read literally (§III-B)"},
-    {"baseline", nullptr, false, "our baseline RRT (tried goal nodes skipped)"},
-    {"paper", "samples,steering,paths,trees", false, "proposed, the paper's techniques (§V)"},
-    {"all", "all", false, "proposed, every technique"},
-    {"samples_steering", "samples,steering", false, "proposed, the RS-decomposition only (§V-A)"},
-    {"none", "none", false,
-     "proposed with every technique off (= baseline, counts RRT iterations)"},
+    {"literal", "literal"},
+    {"baseline", "baseline"},
+    {"paper", "paper"},
+    {"all", "default"},
+    {"default", "default"},
+    {"samples_steering", "default,-paths,-trees,-failures,-shortcuts,-metrics,-speculate"},
+    {"none", "default,-samples,-steering,-paths,-trees,-failures,-shortcuts,-metrics,-speculate"},
 };
 
 const PlannerSpec& planner_spec(const std::string& name) {
@@ -87,8 +87,33 @@ std::string room_label(const std::string& room) {
 }
 
 geometry::Scene load_room(const StudyConfig& config, const std::string& room) {
-  if (room.ends_with(".json")) return geometry::load_scene(room);
-  return geometry::load_scene((config.scenes_dir / (room + ".json")).string());
+  return geometry::load_scene(scene_path(config, room).string());
+}
+
+std::string scene_digest(const StudyConfig& config, const std::string& room) {
+  const fs::path path = scene_path(config, room);
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw InputError("room '" + room + "': no scene file " + path.string() +
+                     (room.ends_with(".json") ? std::string()
+                                              : " (names are looked up in --scenes " +
+                                                    config.scenes_dir.string() + ")"));
+  return file_digest(path);
+}
+
+Row planner_identity(const StudyConfig& config, const std::string& planner) {
+  const optimize::DesignOptions o = design_options(config, planner, 1);
+  Row id;
+  id.set("planner_config", o.planner.name());
+  return id;
+}
+
+Row run_identity(const RunSpec& spec, const StudyConfig& config) {
+  Row id;
+  if (const auto room = spec.params.get("room"))
+    id.set("scene_digest", scene_digest(config, *room));
+  if (const auto planner = spec.params.get("planner")) id.merge(planner_identity(config, *planner));
+  return id;
 }
 
 std::vector<std::string> rooms_of(const StudyConfig& config, std::vector<std::string> defaults) {
@@ -130,14 +155,11 @@ std::vector<std::string> seed_list(const StudyConfig& c) {
 
 optimize::DesignOptions design_options(const StudyConfig& config, const std::string& planner,
                                        std::uint64_t seed) {
-  const PlannerSpec& p = planner_spec(planner);
   optimize::DesignOptions o;
   o.seed = seed;
   o.iterations = config.iterations;
   o.threads = config.threads;
-  o.proposed = p.reuse != nullptr;
-  if (p.reuse) o.reuse = api::parse_reuse(p.reuse);
-  if (p.literal) o.tour.planner.skip_tried_goal_nodes = false;
+  o.planner = api::parse_planner(planner_spec(planner).config);
   return o;
 }
 
@@ -169,7 +191,9 @@ RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep) 
     scene.weights.path = {0, 0, 0};
   optimize::DesignOptions o = design_options(context.config, planner, seed);
   RunOutput out;
-  const std::string label = room_label(room);
+  // Recordings are keyed by the scene's contents, not only its name: an
+  // edited scene of the same file name records its own layouts.
+  const std::string label = room_label(room) + "-" + scene_digest(context.config, room);
   if (mode == "design") {
     Recordings::Layouts layouts;
     const bool record = planner == "baseline" && !spec.params.get("path_weights");

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Internal to experiments/studies*.cpp, not part of the API: what the studies
 // share (the planners they compare, run keys and parameters, the design or
@@ -20,6 +21,15 @@ namespace hrs::experiments::shared {
 std::string room_label(const std::string& room);
 //! The scene of a room name (looked up in --scenes) or .json path.
 geometry::Scene load_room(const StudyConfig& config, const std::string& room);
+//! The digest of a room's scene file (runner.h file_digest); InputError
+//! naming the room and the path when there is no such file.
+std::string scene_digest(const StudyConfig& config, const std::string& room);
+//! The identity column of a planner (kPlanners): planner_config, the
+//! planner configuration it stands for (optimize::PlannerConfig::name()).
+Row planner_identity(const StudyConfig& config, const std::string& planner);
+//! Study::identity of most studies: the digest of the run's room
+//! (scene_digest) and its planner's switches, for the parameters it has.
+Row run_identity(const RunSpec& spec, const StudyConfig& config);
 //! The study's rooms: --rooms when given, else its own (the first only with --quick).
 std::vector<std::string> rooms_of(const StudyConfig& config, std::vector<std::string> defaults);
 //! The seeds 1..config.seeds, as parameter values.

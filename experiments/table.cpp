@@ -1,11 +1,14 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "experiments/table.h"
 
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -183,11 +186,22 @@ Table parse_csv(const std::string& text, const std::string& label) {
   return rows;
 }
 
+namespace {
+
+//! ": " and the system's reason for the last failed call, or "" without one.
+std::string reason(int err) { return err ? std::string(": ") + std::strerror(err) : ""; }
+
+}  // namespace
+
 std::string read_text(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path.string() + ": is a directory, expected a file");
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read file");
+  if (!in) throw InputError(path.string() + ": cannot read file" + reason(errno));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path.string() + ": read error");
+  if (in.bad()) throw InputError(path.string() + ": read error" + reason(errno));
   return text;
 }
 
@@ -199,19 +213,22 @@ void write_text_atomic(const std::filesystem::path& path, const std::string& tex
                                     std::to_string(counter.fetch_add(1));
   {
     std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) throw InputError(path.string() + ": cannot write file");
-    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size() &&
-                    std::fflush(f) == 0 && ::fsync(::fileno(f)) == 0;
-    if (std::fclose(f) != 0 || !ok) {
+    if (!f) throw OutputError(path.string() + ": cannot write file" + reason(errno));
+    int err = 0;
+    if (std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fflush(f) != 0 ||
+        ::fsync(::fileno(f)) != 0)
+      err = errno ? errno : EIO;
+    if (std::fclose(f) != 0 && !err) err = errno ? errno : EIO;
+    if (err) {
       std::remove(tmp.c_str());
-      throw InputError(path.string() + ": write error (disk full?)");
+      throw OutputError(path.string() + ": write error" + reason(err));
     }
   }
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
     std::remove(tmp.c_str());
-    throw InputError(path.string() + ": cannot replace file: " + ec.message());
+    throw OutputError(path.string() + ": cannot replace file: " + ec.message());
   }
 }
 

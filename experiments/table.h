@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tables of the experiments harness: rows of named cells, written and read as
 // CSV (RFC 4180 quoting), and files replaced atomically so that a killed run
@@ -44,11 +45,13 @@ std::string to_csv(const Table& rows);
 //! and the line for unbalanced quotes or a row with the wrong cell count.
 Table parse_csv(const std::string& text, const std::string& label);
 
-//! Reads a whole file; throws hrs::InputError when it cannot.
+//! Reads a whole file; throws hrs::InputError naming the path (and the
+//! system's reason) when it cannot, a directory among them.
 std::string read_text(const std::filesystem::path& path);
 //! Writes `text` to a temporary file beside `path`, flushes it and renames it
 //! over `path`: readers see the old file or the new one, never a mix.
-//! Throws hrs::InputError naming the path on any failure.
+//! Throws hrs::OutputError naming the path and the system's reason on any
+//! failure (a full disk, an unwritable or missing directory).
 void write_text_atomic(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace hrs::experiments

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact, conservative C-space: see cspace.h for the construction.
 //
 // Certification argument. Every C-obstacle piece is P = A ⊕ (−S_k) for a

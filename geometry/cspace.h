@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Exact, conservative configuration space of the wheelchair among furniture
 // and walls (docs/design-notes.md "Exact, conservative collision"; the paper's planner,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Errors at the boundary of hrspace (scene files, CLI arguments, output
 // files). The CLI turns an InputError into one line on stderr and exit status

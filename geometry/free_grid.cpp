@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Certified outer approximation of the free C-space; see free_grid.h for the
 // argument.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A certified outer approximation of the free configuration space, for
 // proving that a leg cannot be planned (beyond the paper: the annealer's

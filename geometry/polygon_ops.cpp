@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exact polygon predicates and decompositions. Predicates use CGAL's
 // exact-predicates kernel (double input taken exactly); region tests that need
 // new points (containment, overlap) use the exact-constructions kernel.
@@ -10,15 +11,18 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/partition_2.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <limits>
 #include <list>
+#include <numbers>
 
 namespace hrs::geometry {
 namespace {
@@ -82,6 +86,109 @@ std::vector<Polygon> merge_convex(std::vector<Polygon> pieces) {
   return pieces;
 }
 
+using EpeckPolygon = CGAL::Polygon_2<Epeck>;
+using EpeckSet = CGAL::Polygon_set_2<Epeck>;
+
+//! Distance from p to the boundary of the polygon and the nearest edge.
+std::pair<double, std::size_t> boundary_distance(Vec2 p, const Polygon& poly) {
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t edge = 0;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const double d = point_segment_distance(p, poly[i], poly[(i + 1) % poly.size()]);
+    if (d < best) {
+      best = d;
+      edge = i;
+    }
+  }
+  return {best, edge};
+}
+
+//! The largest boundary distance (and its edge) of the vertices of `points`
+//! that lie on the given side of `poly` (exact side tests).
+std::pair<double, std::size_t> deepest(const Polygon& points, const Polygon& poly,
+                                       CGAL::Bounded_side side) {
+  const auto p = to_cgal<Epick>(poly);
+  std::pair<double, std::size_t> best{0.0, 0};
+  for (const Vec2& v : points) {
+    if (p.bounded_side(pt(v)) != side) continue;
+    const auto d = boundary_distance(v, poly);
+    if (d.first > best.first) best = d;
+  }
+  return best;
+}
+
+Vec2 to_vec(const Epeck::Point_2& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+
+//! The allowance of `tolerance` along the boundary of a counter-clockwise
+//! polygon, on its outer (`outward`) or inner side: a band of that width
+//! on each edge and a 16-gon inscribed in the circle of that radius at each
+//! vertex. Every piece lies within `tolerance` of the boundary; together
+//! they cover every point on that side within 0.98 x `tolerance` of it.
+std::vector<EpeckPolygon> allowance(const Polygon& poly, double tolerance, bool outward) {
+  std::vector<EpeckPolygon> pieces;
+  const std::size_t n = poly.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 a = poly[i], b = poly[(i + 1) % n];
+    const Vec2 d = (1.0 / norm(b - a)) * (b - a);
+    const Vec2 left{-d.y, d.x};
+    Polygon band;
+    if (outward) {
+      band = {a, a - tolerance * left, b - tolerance * left, b};
+    } else {
+      band = {a, b, b + tolerance * left, a + tolerance * left};
+    }
+    pieces.push_back(to_cgal<Epeck>(band));
+    Polygon cap;
+    for (int k = 0; k < 16; ++k) {
+      const double phi = k * std::numbers::pi / 8.0;
+      cap.push_back({a.x + tolerance * std::cos(phi), a.y + tolerance * std::sin(phi)});
+    }
+    pieces.push_back(to_cgal<Epeck>(cap));
+  }
+  return pieces;
+}
+
+//! True if the region is covered by the pieces (exact Boolean operations;
+//! pieces away from the region's box are skipped).
+bool covered(EpeckSet region, const std::vector<EpeckPolygon>& pieces) {
+  std::list<CGAL::Polygon_with_holes_2<Epeck>> parts;
+  region.polygons_with_holes(std::back_inserter(parts));
+  if (parts.empty()) return true;
+  CGAL::Bbox_2 box = parts.front().outer_boundary().bbox();
+  for (const auto& part : parts) box += part.outer_boundary().bbox();
+  for (const auto& piece : pieces) {
+    if (!CGAL::do_overlap(box, piece.bbox())) continue;
+    region.difference(piece);
+    if (region.is_empty()) return true;
+  }
+  return region.is_empty();
+}
+
+//! The largest boundary distance from `poly` (and its edge) of the points
+//! of what is left of `region`: its vertices and 64 points along each of its
+//! edges (doubles; for messages: the largest can lie inside an edge, as
+//! where a footprint's edge passes between two walls).
+std::pair<double, std::size_t> deepest_left(const EpeckSet& region, const Polygon& poly) {
+  std::list<CGAL::Polygon_with_holes_2<Epeck>> parts;
+  region.polygons_with_holes(std::back_inserter(parts));
+  std::pair<double, std::size_t> best{0.0, 0};
+  const auto visit = [&](const EpeckPolygon& ring) {
+    const std::size_t n = ring.size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 a = to_vec(ring[i]), b = to_vec(ring[(i + 1) % n]);
+      for (int k = 0; k < 64; ++k) {
+        const auto d = boundary_distance(a + (k / 64.0) * (b - a), poly);
+        if (d.first > best.first) best = d;
+      }
+    }
+  };
+  for (const auto& part : parts) {
+    visit(part.outer_boundary());
+    for (auto h = part.holes_begin(); h != part.holes_end(); ++h) visit(*h);
+  }
+  return best;
+}
+
 }  // namespace
 
 bool is_simple(const Polygon& polygon) {
@@ -111,6 +218,68 @@ bool interiors_overlap(const Polygon& a, const Polygon& b) {
   std::list<CGAL::Polygon_with_holes_2<Epeck>> common;
   CGAL::intersection(pa, pb, std::back_inserter(common));
   return !common.empty();
+}
+
+std::optional<Protrusion> protrusion(const Polygon& inner, const Polygon& outer,
+                                     double tolerance) {
+  const auto a = to_cgal<Epeck>(inner);
+  const auto b = to_cgal<Epeck>(outer);
+  std::list<CGAL::Polygon_with_holes_2<Epeck>> rest;
+  CGAL::difference(a, b, std::back_inserter(rest));
+  if (rest.empty()) return std::nullopt;
+  // A corner farther out than the tolerance settles it.
+  const auto corner = deepest(inner, outer, CGAL::ON_UNBOUNDED_SIDE);
+  if (corner.first > tolerance) return Protrusion{corner.first, corner.second};
+  EpeckSet region;
+  for (const auto& part : rest) region.join(part);
+  const auto pieces = allowance(outer, tolerance, true);
+  if (covered(region, pieces)) return std::nullopt;
+  // Where it sticks out beyond the allowance (a wall's corner poking into
+  // the footprint leaves no vertex out: the region's edges are sampled).
+  for (const auto& piece : pieces) region.difference(piece);
+  Protrusion worst{std::max(tolerance, corner.first), corner.second};
+  if (const auto left = deepest_left(region, outer); left.first > worst.amount)
+    worst = {left.first, left.second};
+  return worst;
+}
+
+std::string metres_text(double metres) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", metres);
+  return buf;
+}
+
+std::string sticks_out_text(const Protrusion& protrusion, const Polygon& room) {
+  const auto point = [](Vec2 v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "(%.6g,%.6g)", v.x, v.y);
+    return std::string(buf);
+  };
+  const std::size_t i = protrusion.edge % room.size();
+  return "sticks out " + metres_text(protrusion.amount) + " m past the wall from " +
+         point(room[i]) + " to " + point(room[(i + 1) % room.size()]);
+}
+
+std::optional<double> overlap_depth(const Polygon& a, const Polygon& b, double tolerance) {
+  const auto pa = to_cgal<Epeck>(a);
+  const auto pb = to_cgal<Epeck>(b);
+  if (CGAL::do_overlap(pa.bbox(), pb.bbox()) == false) return std::nullopt;
+  std::list<CGAL::Polygon_with_holes_2<Epeck>> common;
+  CGAL::intersection(pa, pb, std::back_inserter(common));
+  if (common.empty()) return std::nullopt;
+  const double corner = std::max(deepest(a, b, CGAL::ON_BOUNDED_SIDE).first,
+                                 deepest(b, a, CGAL::ON_BOUNDED_SIDE).first);
+  if (corner > tolerance) return corner;
+  EpeckSet region;
+  for (const auto& part : common) region.join(part);
+  const auto near_b = allowance(b, tolerance, false);
+  const auto near_a = allowance(a, tolerance, false);
+  if (covered(region, near_b) && covered(region, near_a)) return std::nullopt;
+  EpeckSet deep_b = region, deep_a = region;
+  for (const auto& piece : near_b) deep_b.difference(piece);
+  for (const auto& piece : near_a) deep_a.difference(piece);
+  return std::max({corner, deepest_left(deep_b, b).first, deepest_left(deep_a, a).first,
+                   tolerance});
 }
 
 std::vector<Polygon> convex_partition(const Polygon& polygon) {

@@ -1,7 +1,14 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Exact polygon predicates and decompositions (CGAL with exact predicates,
 // confined to polygon_ops.cpp). Input coordinates are doubles, taken exactly.
+// The furniture checks (scene reader, design loop) use the contact-tolerant
+// predicates protrusion() and overlap_depth() with kContactTolerance; the
+// exact ones serve the wheelchair, whose C-space answers are certified.
 
+#include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "geometry/pose.h"
@@ -17,6 +24,52 @@ bool is_counterclockwise(const Polygon& polygon);
 bool polygon_inside(const Polygon& inner, const Polygon& outer);
 //! True if the open interiors of two simple polygons intersect.
 bool interiors_overlap(const Polygon& a, const Polygon& b);
+
+//! Contact tolerance of furniture, m: a footprint may stick out of the room,
+//! or into another footprint or the door's clear zone, by at most this much
+//! and still count as inside, or as touching. Furniture placed flush with a
+//! wall at a heading typed to 4-5 digits (1.5708 for pi/2) moves a corner
+//! (half-extent x angle error) a few micrometres past the wall; this absorbs
+//! it for half-extents up to about 2.5 m. The door centre and opening use the
+//! same tolerance. The wheelchair's own checks (start pose, C-space,
+//! collisions) stay exact.
+inline constexpr double kContactTolerance = 1e-5;
+
+//! How a footprint leaves a region: `amount` (m, a lower bound of the
+//! largest distance of a point of it from the region, exact for corners
+//! that stick out) and the edge i (from vertex i to i + 1) of the region
+//! nearest to where it is largest.
+struct Protrusion {
+  double amount = 0.0;
+  std::size_t edge = 0;
+};
+
+//! Empty if `inner` lies in `outer` but for points within `tolerance` of
+//! `outer` (both simple, counter-clockwise); else how far it sticks out.
+//! Exact: no point farther than `tolerance` passes; every point within
+//! 0.98 x `tolerance` does (the corners of the allowance are 16-gons).
+std::optional<Protrusion> protrusion(const Polygon& inner, const Polygon& outer,
+                                     double tolerance = kContactTolerance);
+//! Empty if the two footprints (simple, counter-clockwise) overlap at most
+//! by contact: every common point within `tolerance` of the boundary of
+//! each; else the depth of the overlap (m, a lower bound, exact for a corner
+//! of one inside the other).
+std::optional<double> overlap_depth(const Polygon& a, const Polygon& b,
+                                    double tolerance = kContactTolerance);
+//! "sticks out 0.012 m past the wall from (0,0) to (5,0)": the amount (3
+//! significant digits) and the edge of `room` named by its end points.
+std::string sticks_out_text(const Protrusion& protrusion, const Polygon& room);
+//! A length in metres for messages, 3 significant digits ("0.012").
+std::string metres_text(double metres);
+//! polygon_inside within kContactTolerance (furniture in the room).
+inline bool inside_with_contact(const Polygon& inner, const Polygon& outer) {
+  return !protrusion(inner, outer).has_value();
+}
+//! interiors_overlap beyond kContactTolerance (furniture against furniture).
+inline bool overlap_beyond_contact(const Polygon& a, const Polygon& b) {
+  return overlap_depth(a, b).has_value();
+}
+
 //! Convex pieces whose union is the simple counter-clockwise polygon: CGAL's
 //! optimal convex partition (fewest pieces; Greene's dynamic program, O(n⁴)
 //! for n vertices, cheap for furniture outlines); a convex input is returned

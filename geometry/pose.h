@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Plain 2-D value types shared by every module: points, poses, angle
 // wrapping, pose algebra (frames, gaps) and bounding boxes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Seeded randomness that gives the same numbers with every standard library:
 // splitmix64 to derive independent seeds from (seed, index, ...) tuples, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the scene model derives from its data (geometry/scene.h): object
 // footprints in the world, the door's wall, clear zone and start pose, the
 // longest walk of the AO graph, polygon areas. The reader and writer of the
@@ -7,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numbers>
 #include <limits>
 #include <set>
 #include <utility>
@@ -124,6 +127,31 @@ void require_sequences(const Scene& scene, const std::string& label) {
         label + ": /activity/visits: no sequence of " + std::to_string(scene.activity.visits) +
         " visits leaves the door (the AO graph's longest has " + std::to_string(longest) + ")"));
   }
+}
+
+std::vector<std::string> degree_like_angles(const Scene& scene, const std::string& label) {
+  std::vector<std::string> out;
+  const auto check = [&](double angle, const std::string& ptr) {
+    if (!(std::abs(angle) > 2.0 * std::numbers::pi)) return;
+    char given[32], radians[32];
+    std::snprintf(given, sizeof given, "%.10g", angle);
+    std::snprintf(radians, sizeof radians, "%.5g", angle * std::numbers::pi / 180.0);
+    out.push_back(scene_io::one_line(label + ": " + ptr + ": angle " + given +
+                                     " is larger than 2π in magnitude: radians are expected (" +
+                                     given + "° would be " + radians + ")"));
+  };
+  if (scene.door.start) check(scene.door.start->theta, "/door/start/2");
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const Object& o = scene.objects[i];
+    const std::string ptr = "/objects/" + std::to_string(i);
+    check(o.pose.theta, ptr + "/pose/2");
+    if (o.wall && o.wall->angle) check(*o.wall->angle, ptr + "/wall/angle");
+  }
+  for (std::size_t i = 0; i < scene.relations.size(); ++i) {
+    if (scene.relations[i].angle)
+      check(*scene.relations[i].angle, "/relations/" + std::to_string(i) + "/angle");
+  }
+  return out;
 }
 
 double signed_area(const Polygon& polygon) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The scene model (`hrspace-scene/1`, see docs/scene-format.md): plain
 // data for the room, door, wheelchair, furniture, interior-design preferences
@@ -182,6 +183,11 @@ int longest_walk(const Activity& activity, int cap);
 //! Throws InputError("LABEL: /activity/visits: ...") when the AO graph has no
 //! sequence of activity.visits moves: nothing to tour (design needs one).
 void require_sequences(const Scene& scene, const std::string& label);
+//! Warnings for the angles of a scene larger than 2π in magnitude (object and
+//! start headings, wall and relation angles): legal, but they look like
+//! degrees. One line each, "LABEL: /objects/0/pose/2: angle 90 is larger than
+//! 2π in magnitude: radians are expected (90° would be 1.5708)".
+std::vector<std::string> degree_like_angles(const Scene& scene, const std::string& label);
 //! Area of a simple polygon (positive when counter-clockwise).
 double signed_area(const Polygon& polygon);
 

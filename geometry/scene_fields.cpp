@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Typed, limit-checked reading of the scene format's fields
 // (FieldReader, geometry/scene_json.h): numbers against the limits of the
 // format, points, poses, sizes and simple counter-clockwise polygons.

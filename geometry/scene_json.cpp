@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scene text to JSON (geometry/scene_json.h): the checks that come before any
 // field is read (empty text, nesting depth, duplicate keys, JSON syntax), and
 // the helpers that give every message its one-line "/pointer: what" shape.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Internal to geometry/scene_*.cpp, not part of the API: the names of the
 // scene format, its message and JSON-pointer helpers, and FieldReader.
@@ -11,6 +12,7 @@
 #include <string_view>
 #include <utility>
 
+#include "geometry/polygon_ops.h"
 #include "geometry/scene.h"
 
 namespace hrs::geometry::scene_io {
@@ -21,8 +23,9 @@ inline constexpr std::string_view kFormat = "hrspace-scene/1";
 inline constexpr std::string_view kStartNode = kStartNodeId;
 inline constexpr std::string_view kComment = "comment";
 inline constexpr std::array<std::string_view, 4> kSideNames{"front", "back", "left", "right"};
-//! Door centre on the boundary, door width on its edge.
-inline constexpr double kBoundaryTolerance = 1e-6;
+//! Door centre on the boundary, door width on its edge: the contact
+//! tolerance of furniture (geometry/polygon_ops.h).
+inline constexpr double kBoundaryTolerance = kContactTolerance;
 
 //! Replaces control characters so that a message stays on one line.
 std::string one_line(std::string_view text);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reader and validator of `hrspace-scene/1` (docs/scene-format.md): the
 // document section by section (room, door, wheelchair, objects, relations,
 // activity, weights). Every rule of the format is checked here, at the
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <utility>
 
@@ -32,7 +34,17 @@ using scene_io::literal;
 using scene_io::num;
 using scene_io::one_line;
 
-constexpr double kRowSumTolerance = 1e-6;  //!< AO rows sum to 1
+constexpr double kRowSumTolerance = 1e-6;  //!< AO rows sum to 1 within this, both ways
+//! Slack for the rounding of decimal probabilities to doubles and of their
+//! sum: without it 0.999999 passed and 1.000001 failed (1.000001 - 1 is
+//! 1.00000000003e-6 in doubles, 1 - 0.999999 is 0.99999999992e-6).
+constexpr double kRowSumRounding = 1e-12;
+
+//! For a refused pose: a hint when its heading looks like degrees.
+std::string degrees_hint(double theta) {
+  if (!(std::abs(theta) > 2.0 * std::numbers::pi)) return "";
+  return "; its heading " + num(theta) + " is larger than 2π: radians are expected";
+}
 
 //! Rectangle [depth, width] centred on the origin, counter-clockwise.
 Polygon centred_rectangle(double depth, double width) {
@@ -256,18 +268,29 @@ class SceneReader : public scene_io::FieldReader {
         fail(child(op, "pose"), "the footprint of " + literal(o.id) +
                                     " degenerates when placed at this pose (rounding)");
       }
-      if (!polygon_inside(mine, room.polygon)) {
-        fail(child(op, "pose"), "the footprint of " + literal(o.id) + " is not inside the room");
+      // Contact (with walls, the clear zone, other objects) is allowed
+      // within kContactTolerance: flush furniture at a rounded heading.
+      if (const auto out_of_room = protrusion(mine, room.polygon)) {
+        fail(child(op, "pose"), "the footprint of " + literal(o.id) + " " +
+                                    sticks_out_text(*out_of_room, room.polygon) +
+                                    " (contact tolerance " + num(kContactTolerance) + " m)" +
+                                    degrees_hint(o.pose.theta));
       }
-      if (o.fixed && interiors_overlap(mine, clear_zone)) {
-        fail(child(op, "pose"), "fixed object " + literal(o.id) +
-                                    " blocks the door's clear zone (no layout could be valid)");
+      if (o.fixed) {
+        if (const auto depth = overlap_depth(mine, clear_zone)) {
+          fail(child(op, "pose"), "fixed object " + literal(o.id) +
+                                      " enters the door's clear zone by " + metres_text(*depth) +
+                                      " m (no layout could be valid)" +
+                                      degrees_hint(o.pose.theta));
+        }
       }
       if (o.fixed) {
         for (std::size_t k = 0; k < out.size(); ++k) {
-          if (out[k].fixed && interiors_overlap(mine, world_footprint(out[k]))) {
+          if (!out[k].fixed) continue;
+          if (const auto depth = overlap_depth(mine, world_footprint(out[k]))) {
             fail(child(op, "pose"), "fixed object " + literal(o.id) + " overlaps fixed object " +
-                                        literal(out[k].id) + " (" + child(ptr, k) + ")");
+                                        literal(out[k].id) + " (" + child(ptr, k) + ") by " +
+                                        metres_text(*depth) + " m" + degrees_hint(o.pose.theta));
           }
         }
       }
@@ -337,7 +360,7 @@ class SceneReader : public scene_io::FieldReader {
         out[to] = v;
         sum += v;
       }
-      if (std::abs(sum - 1.0) > kRowSumTolerance) {
+      if (std::abs(sum - 1.0) > kRowSumTolerance + kRowSumRounding) {
         fail(rp, "probabilities must sum to 1 (+-1e-6), got " + num(sum));
       }
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writer of `hrspace-scene/1` (docs/scene-format.md): a Scene as JSON text
 // that reads back to the same Scene, section by section, pretty-printed so
 // that scene files stay readable and diffable.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "optimize/annealer.h"
 
 #include <algorithm>
@@ -173,6 +174,26 @@ void redraw_jump(const AnnealOptions& options, const AnnealCallbacks& callbacks,
   }
 }
 
+//! A preference move of `object` (callbacks.preferred), redrawn until valid;
+//! nullopt when no draw was valid.
+std::optional<Move> preference_move(const AnnealOptions& options, const AnnealCallbacks& callbacks,
+                                    Chain& chain, int object, std::mt19937_64& rng) {
+  const Pose2 from = chain.poses[object];
+  for (int a = 0; a < options.preference_attempts; ++a) {
+    const std::optional<Pose2> to = callbacks.preferred(chain.poses, object, rng);
+    if (!to) return std::nullopt;
+    chain.poses[object] = *to;
+    const bool ok = callbacks.move_valid(chain.poses, object);
+    chain.poses[object] = from;
+    if (!ok) continue;
+    Move move{object, from, *to};
+    move.rotation = to->x == from.x && to->y == from.y;
+    move.preference = true;
+    return move;
+  }
+  return std::nullopt;
+}
+
 //! The initial layout's cost, and the best so far when it is valid.
 Chain start_chain(std::vector<Pose2> poses, const AnnealCallbacks& callbacks,
                   AnnealResult& result) {
@@ -212,15 +233,20 @@ AnnealResult anneal(std::vector<Pose2> poses, const std::vector<bool>& movable,
     e.temperature = temperature_at(options, k);
     // Draws in a fixed order: object, move, the Metropolis uniform (before
     // the proposal is costed), then any redraws of an invalid jump.
+    // With callbacks.preferred one more draw decides a preference move first.
     bool focused = false;
     const int object = pick_object(options, callbacks, candidates, rng, focused);
-    Move move = draw_move(options, chain.poses[object], object, focused, k, rng);
+    std::optional<Move> preferred;
+    if (callbacks.preferred && uniform01(rng) < options.preference_probability)
+      preferred = preference_move(options, callbacks, chain, object, rng);
+    Move move = preferred ? *preferred : draw_move(options, chain.poses[object], object, focused, k, rng);
     const double u = uniform01(rng);
     redraw_jump(options, callbacks, focused ? options.focus_jump_attempts : options.jump_attempts,
                 chain, move, rng);
     e.object = object;
     e.rotation = move.rotation;
     e.jump = move.jump;
+    e.preference = move.preference;
     decide(move, u, chain, e, result, callbacks);
     e.current_cost = chain.current;
     e.best_cost = result.best_cost;

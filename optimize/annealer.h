@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Simulated annealing over object poses (paper §III-E): Metropolis acceptance
 // min(1, exp(−ΔC/t)) under geometric cooling; a move translates one movable
@@ -53,6 +54,12 @@ struct AnnealOptions {
   //! relocation frees it.
   double focus_probability = 0.5;
   int focus_jump_attempts = 200;
+  //! Share of proposals drawn from AnnealCallbacks::preferred when it is set
+  //! (a pose that meets one of the object's preferences), redrawn until
+  //! valid at most preference_attempts times; when none is valid the
+  //! iteration proposes an ordinary move instead.
+  double preference_probability = 0.25;
+  int preference_attempts = 8;
 };
 
 //! One proposed move of one object.
@@ -61,6 +68,7 @@ struct Move {
   Pose2 from, to;
   bool rotation = false;
   bool jump = false;  //!< a translation to a uniform position in the bounds
+  bool preference = false;  //!< drawn from AnnealCallbacks::preferred
 };
 
 //! What happened in one iteration (for reports).
@@ -70,6 +78,7 @@ struct TraceEntry {
   int object = -1;
   bool rotation = false;
   bool jump = false;
+  bool preference = false;     //!< a preference move (AnnealCallbacks::preferred)
   bool valid = false;          //!< passed the exact validity test
   double proposed_cost = 0.0;  //!< NaN when not valid (never evaluated)
   bool accepted = false;
@@ -130,6 +139,13 @@ struct AnnealCallbacks {
   //! them instead of from all movable objects. Beyond the paper: the design
   //! runner names the objects that wall the door in (docs/optimize.md).
   std::function<std::vector<int>()> focus;
+  //! A pose of `object` that meets one of its preferences (interior design
+  //! moves: against a wall, in a wall slot, aligned with a relation
+  //! partner), drawn with `rng`; nullopt when it has none. Unset: never
+  //! asked, and the annealer draws exactly as without it.
+  std::function<std::optional<Pose2>(const std::vector<Pose2>& poses, int object,
+                                     std::mt19937_64& rng)>
+      preferred;
 };
 
 //! min(1, exp(−delta/t)); 1 for delta <= 0, 0 for t <= 0 and delta > 0.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "optimize/costs.h"
 
 #include <algorithm>
@@ -6,6 +7,7 @@
 #include <limits>
 
 #include "geometry/error.h"
+#include "optimize/preferences.h"
 
 namespace hrs::optimize {
 
@@ -16,6 +18,13 @@ using geometry::Vec2;
 namespace {
 
 double squared(double v) { return v * v; }
+
+//! A bounded preference term: kPreferencePenalty · (1 − exp(−z²/2)),
+//! z = residual / (2 · tolerance).
+double bounded_term(double residual, double tolerance) {
+  const double z = residual / (2.0 * tolerance);
+  return kPreferencePenalty * -std::expm1(-0.5 * z * z);
+}
 
 }  // namespace
 
@@ -101,25 +110,35 @@ InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
   for (const auto& r : relations_) {
     const auto& rel = scene_.relations[r.relation];
     const Pose2 &a = poses[r.a], &b = poses[r.b];
-    if (rel.distance)
-      c.distance +=
-          rel.weight * squared(geometry::norm(a.position() - b.position()) - *rel.distance);
-    if (rel.angle)
-      c.rotation += rel.weight * squared(geometry::wrap_angle(a.theta - b.theta - *rel.angle));
+    const PreferenceTolerances tol;
+    if (rel.distance) {
+      const double e = geometry::norm(a.position() - b.position()) - *rel.distance;
+      c.distance += rel.weight * (bounded_ ? bounded_term(std::abs(e), std::max(
+                                                 tol.relation_distance,
+                                                 tol.relation_distance_share * *rel.distance))
+                                           : squared(e));
+    }
+    if (rel.angle) {
+      const double e = geometry::wrap_angle(a.theta - b.theta - *rel.angle);
+      c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle) : squared(e));
+    }
   }
   for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
     const auto& wall = scene_.objects[i].wall;
     if (!wall || (!wall->distance && !wall->angle)) continue;
     const int idx = static_cast<int>(i);
     const int e = nearest_wall(idx, poses[i]);
+    const PreferenceTolerances tol;
     if (wall->distance) {
       geometry::Object o = scene_.objects[i];
       o.pose = poses[i];
-      c.distance += squared(wall_distance(geometry::world_footprint(o), e) - *wall->distance);
+      const double r = wall_distance(geometry::world_footprint(o), e) - *wall->distance;
+      c.distance += bounded_ ? bounded_term(std::abs(r), tol.wall_distance) : squared(r);
     }
-    if (wall->angle)
-      c.rotation +=
-          squared(geometry::wrap_angle(poses[i].theta - wall_normal_angle(e) - *wall->angle));
+    if (wall->angle) {
+      const double r = geometry::wrap_angle(poses[i].theta - wall_normal_angle(e) - *wall->angle);
+      c.rotation += bounded_ ? bounded_term(std::abs(r), tol.wall_angle) : squared(r);
+    }
   }
   return c;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The cost of a layout (paper §III-D, docs/design-notes.md "Costs"):
 //   C_total = Σ_s L̂(s) · Σ_legs α̂_end · (w_l·length + w_r·rotation + w_c·clearance)
@@ -62,6 +63,9 @@ using geometry::Pose2;
 
 //! An unfound tour costs as if its length were this many room perimeters.
 inline constexpr double kUnfoundPerimeterFactor = 3.0;
+//! The most one preference term costs with bounded preferences (before the
+//! interior weight and the relation's weight).
+inline constexpr double kPreferencePenalty = 2.0;
 //! Walls this close (metres) to the nearest one also count as "nearest".
 inline constexpr double kWallTieTolerance = 0.01;
 
@@ -101,6 +105,14 @@ class CostModel {
   //! Length an unfound tour is charged as (metres).
   double unfound_length() const { return kUnfoundPerimeterFactor * perimeter_; }
 
+  //! With `on`, interior() charges each preference term (the terms
+  //! optimize/preferences.h counts) kPreferencePenalty · (1 − exp(−z²/2)),
+  //! z = residual / (2 · its tolerance), times the relation's weight, instead
+  //! of its squared residual: bounded, so that no preference outweighs an
+  //! unfound tour, and in units of what a designer tolerates, so that 3° off
+  //! a wall counts like 5 cm off it (docs/optimize.md "Preferences").
+  void set_bounded_preferences(bool on) { bounded_ = on; }
+  bool bounded_preferences() const { return bounded_; }
   //! Unweighted interior costs of object poses (scene order).
   InteriorCosts interior(const std::vector<Pose2>& poses) const;
   //! α̂-weighted [length, rotation, clearance deficit] of one tour of
@@ -140,6 +152,7 @@ class CostModel {
   std::vector<double> seq_weight_;
   std::map<std::string, double> alpha_hat_;
   double perimeter_ = 0.0;
+  bool bounded_ = false;
   struct RelationIndex {
     int a, b;
     int relation;  // index into scene_.relations

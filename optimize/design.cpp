@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "optimize/design.h"
 
 #include <algorithm>
@@ -14,6 +15,7 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "optimize/polish.h"
 #include "optimize/tour_round.h"
 #include "planning/motion_validator.h"
 
@@ -36,15 +38,19 @@ std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
 }
 
 std::string object_violation(const geometry::Scene& scene, int index) {
+  // Contact is allowed within geometry::kContactTolerance, as in the reader.
   const auto& o = scene.objects[index];
   const auto fp = geometry::world_footprint(o);
-  if (!geometry::polygon_inside(fp, scene.room.polygon)) return o.id + " is not inside the room";
-  if (geometry::interiors_overlap(fp, geometry::door_clear_zone(scene)))
-    return o.id + " enters the door's clear zone";
+  if (const auto out = geometry::protrusion(fp, scene.room.polygon))
+    return o.id + " " + geometry::sticks_out_text(*out, scene.room.polygon);
+  if (const auto depth = geometry::overlap_depth(fp, geometry::door_clear_zone(scene)))
+    return o.id + " enters the door's clear zone by " + geometry::metres_text(*depth) + " m";
   for (std::size_t j = 0; j < scene.objects.size(); ++j) {
     if (static_cast<int>(j) == index) continue;
-    if (geometry::interiors_overlap(fp, geometry::world_footprint(scene.objects[j])))
-      return o.id + " overlaps " + scene.objects[j].id;
+    if (const auto depth =
+            geometry::overlap_depth(fp, geometry::world_footprint(scene.objects[j])))
+      return o.id + " overlaps " + scene.objects[j].id + " by " + geometry::metres_text(*depth) +
+             " m";
   }
   return "";
 }
@@ -97,6 +103,8 @@ class DesignRun {
       poses_.push_back(o.pose);
       movable_.push_back(!o.fixed);
     }
+    poses_initial_ = poses_;
+    model_.set_bounded_preferences(options.planner.prefer);
     // With all path weights 0 the cost does not depend on the tours: plan
     // only the initial and the best layout (Fig. 1's "designed without the
     // chair").
@@ -173,7 +181,20 @@ class DesignRun {
     cb.new_best = [this] { new_best(); };
     cb.progress = [this](const TraceEntry& e) { step_done(e); };
     cb.focus = [this] { return focus_current_; };
+    if (options_.planner.prefer)
+      cb.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+        return preferred_move(p, o, rng);
+      };
     return cb;
+  }
+
+  //! A preference move (AnnealCallbacks::preferred): one of the object's
+  //! preferred poses or a wall slot, uniformly.
+  std::optional<Pose2> preferred_move(const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+    std::vector<Pose2> c = preferred_poses(work_, model_, p, o);
+    if (const auto slot = wall_slot(work_, o, rng)) c.push_back(*slot);
+    if (c.empty()) return std::nullopt;
+    return c[uniform_index(rng, c.size())];
   }
 
   //! The exact checks of one moved object, before any planning.
@@ -192,7 +213,7 @@ class DesignRun {
   //! back is seldom drawn. Only the stops within reach of the object's new
   //! footprint are asked, with the object moved in the C-space and back.
   bool covers_a_stop(const Pose2& to, int moved) {
-    if (!options_.escape || !plan_every_iteration_ || open_stops_.empty()) return false;
+    if (!options_.planner.escape || !plan_every_iteration_ || open_stops_.empty()) return false;
     geometry::Object o = work_.objects[moved];
     o.pose = to;
     const geometry::Polygon fp = geometry::world_footprint(o);
@@ -222,7 +243,7 @@ class DesignRun {
   //! The stops with a free goal pose in the current layout (covers_a_stop).
   void refresh_open_stops() {
     open_stops_.clear();
-    if (!options_.escape || !plan_every_iteration_) return;
+    if (!options_.planner.escape || !plan_every_iteration_) return;
     for (int s : stop_objects())
       if (!round_.goals_of(s).empty()) open_stops_.push_back(s);
   }
@@ -242,7 +263,7 @@ class DesignRun {
       return proposed_terms_.total();
     }
     const InteriorCosts in = model_.interior(p);
-    if (!options_.early_reject) {
+    if (!options_.planner.early) {
       plan_current();
       proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage());
       return proposed_terms_.total();
@@ -286,8 +307,8 @@ class DesignRun {
   //! that both give the same trace. Floors only bound: the decisions are
   //! the same with or without them.
   std::vector<double> pre_planning_floors() {
-    const bool baseline_like = !options_.proposed || !options_.reuse.any();
-    if (!baseline_like || !options_.refuse_impossible) return {};
+    const bool baseline_like = !options_.planner.proposed || !options_.planner.reuse.any();
+    if (!baseline_like || !options_.planner.refuse) return {};
     if (current_terms_.tours_found == current_terms_.tours_total) return {};
     const auto f0 = Clock::now();
     std::vector<double> floors = round_.certain_floors(model_);
@@ -306,7 +327,7 @@ class DesignRun {
   //! Returns true when the layout changed; the annealing starts from it.
   bool unblock() {
     static constexpr int kUnblockProposals = 300;
-    if (!options_.escape || !plan_every_iteration_) return false;
+    if (!options_.planner.escape || !plan_every_iteration_) return false;
     const std::vector<int> stops = stop_objects();
     double score = 0.0;
     std::vector<int> walled = walled_off(stops, score);
@@ -415,7 +436,7 @@ class DesignRun {
   //! margin lets through): the movable stops where unfound tours broke off
   //! and the movable objects within kFocusReach of their goal poses.
   std::vector<int> walling_objects() {
-    if (!options_.escape) return {};
+    if (!options_.planner.escape) return {};
     const std::vector<int> walled = round_.walled_stops();
     if (walled.empty()) return focus_for(round_.failing_stops(), false);
     std::vector<int> out = focus_for(walled, true);
@@ -506,6 +527,40 @@ class DesignRun {
     if (progress_) progress_(step);
   }
 
+  //! The final polish (optimize/polish.h) of the best layout, written into
+  //! result_.layout, result_.final and result_.tours.
+  void polish_best(const AnnealResult& r) {
+    std::vector<Pose2> poses = r.best;
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      if (cspace_.object_pose(static_cast<int>(i)) != poses[i]) place(static_cast<int>(i), poses[i]);
+    poses_ = poses;
+    CostTerms terms = result_.final;
+    if (!plan_every_iteration_) {
+      iteration_ = r.proposals + 1;
+      plan_current();
+      terms = model_.evaluate(poses, tours_, &round_.blockage());
+      result_.tours = tours_;
+      result_.final = terms;
+    }
+    PolishHooks hooks;
+    hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
+    hooks.try_pose = [this](const std::vector<Pose2>& p, int o, const Pose2& to) {
+      place(o, to);
+      ++iteration_;
+      plan_current();
+      return model_.evaluate(p, tours_, &round_.blockage());
+    };
+    hooks.undo = [this](int o, const Pose2& to) { place(o, to); };
+    hooks.kept = [this] { result_.tours = tours_; };
+    const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
+    const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
+    result_.polish = {pr.tried, pr.kept};
+    if (pr.kept == 0) return;
+    for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
+    result_.final = terms;
+    result_.valid = layout_violation(result_.layout).empty();
+  }
+
   //! The best layout, its tours (toured now when the tours were not planned
   //! every iteration) and the run's counts.
   void finish(const AnnealResult& r) {
@@ -520,7 +575,9 @@ class DesignRun {
       result_.final = current_terms_;
       result_.tours = current_tours_;
     }
-    if (!plan_every_iteration_ && r.best_valid) {
+    const bool polished = options_.planner.prefer && r.best_valid && !(stop_ && stop_->load());
+    if (polished) polish_best(r);
+    if (!plan_every_iteration_ && r.best_valid && !polished) {
       for (std::size_t i = 0; i < scene_.objects.size(); ++i)
         cspace_.move_object(static_cast<int>(i), r.best[i]);
       iteration_ = r.proposals + 1;
@@ -532,7 +589,12 @@ class DesignRun {
     result_.valid_proposals = r.valid_proposals;
     result_.accepted = r.accepted;
     result_.stopped = r.stopped;
-    result_.proposed = options_.proposed;
+    result_.proposed = options_.planner.proposed;
+    result_.planner = options_.planner.name();
+    result_.preferences_initial = check_preferences(scene_, model_, poses_initial_);
+    std::vector<Pose2> best;
+    for (const auto& o : result_.layout.objects) best.push_back(o.pose);
+    result_.preferences = check_preferences(scene_, model_, best);
     result_.gate_fills = round_.gate().fills();
     result_.gate_ms = round_.gate().fill_ms();
     if (result_.tours_planned > 0)
@@ -540,7 +602,7 @@ class DesignRun {
           result_.early.tours_skipped * result_.time_planning_s / result_.tours_planned;
     if (planning::ReusePlanner* reuse = round_.reuse()) {
       result_.legs_refused = static_cast<long>(reuse->totals().legs_proven);
-      result_.reuse = options_.reuse.names();
+      result_.reuse = options_.planner.reuse.names();
       result_.counters = reuse->totals();
     }
   }
@@ -557,6 +619,7 @@ class DesignRun {
   geometry::CSpace& cspace_;
   std::vector<planning::Tour>& tours_;
   std::vector<Pose2> poses_;
+  std::vector<Pose2> poses_initial_;  //!< the input layout's
   std::vector<bool> movable_;
   std::vector<int> focus_current_;  //!< walling_objects() of the current layout
   std::vector<int> open_stops_;     //!< stops with a free goal pose in the current layout

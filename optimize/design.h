@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The design runner behind `hrspace design` (paper §III, Fig. 2): simulated
 // annealing over the furniture poses (§III-E) where every evaluated layout is
@@ -32,6 +33,8 @@
 #include "geometry/scene.h"
 #include "optimize/annealer.h"
 #include "optimize/costs.h"
+#include "optimize/planner_config.h"
+#include "optimize/preferences.h"
 #include "optimize/sequences.h"
 #include "planning/reach_gate.h"
 #include "planning/recheck.h"
@@ -49,19 +52,10 @@ struct DesignOptions {
   AnnealOptions anneal;            //!< moves; its temperatures and iterations are set from above
   planning::TourOptions tour;      //!< the tour planner (baseline)
   geometry::CSpaceOptions cspace;
-  //! The proposed planner (§V, planning/reuse.h) instead of the baseline.
-  bool proposed = false;
-  planning::ReuseOptions reuse;  //!< its techniques (all on by default)
-  //! Beyond the paper (docs/optimize.md): a leg still unfound after 300
-  //! RRT iterations whose ends the free grid separates stops there, for
-  //! either planner. The baseline's tours are the same with it as without.
-  bool refuse_impossible = true;
-  //! Beyond the paper: unfound tours are charged by how walled off their
-  //! stops are (optimize/costs.h), so blocked layouts can be climbed out of.
-  bool escape = true;
-  //! Beyond the paper: a proposal stops being planned once a lower bound of
-  //! its cost is rejected by the Metropolis draw (the same decision).
-  bool early_reject = true;
+  //! Which planner and which of the design loop's additions (refusal gate,
+  //! escape, early rejection, goal skipping): optimize/planner_config.h.
+  //! `tour.planner.skip_tried_goal_nodes` is taken from it.
+  PlannerConfig planner;
   planning::ReachGateOptions gate;  //!< the grid behind refusals and escape
   //! When set, the object poses of every planned layout are appended here,
   //! in planning order (the input of replay_planning()).
@@ -86,6 +80,9 @@ struct DesignResult {
   std::vector<Sequence> sequences;    //!< the M sequences, most likely first
   std::vector<planning::Tour> tours;  //!< tours of the best layout (tours[k] ↔ sequences[k])
   CostTerms initial;                  //!< of the input layout
+  //! The scene's preferences met by the input and by the best layout
+  //! (optimize/preferences.h, default tolerances).
+  PreferenceReport preferences_initial, preferences;
   CostTerms final;                    //!< of the best layout
   bool valid = false;                 //!< the best layout passed every exact check
   int proposals = 0, valid_proposals = 0, accepted = 0;
@@ -119,16 +116,22 @@ struct DesignResult {
   //! Moves refused because they would leave a stop without any free goal
   //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.
   int covering_moves = 0;
+  //! The final polish (optimize/polish.h): poses planned and kept.
+  struct Polish {
+    int tried = 0, kept = 0;
+  } polish;
   long legs_refused = 0;     //!< legs the free grid proved impossible
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
   double gate_ms = 0.0;          //!< their total time
   bool proposed = false;             //!< planned by the proposed planner
+  std::string planner;               //!< the planner configuration's name (PlannerConfig::name)
   std::string reuse;                 //!< its techniques ("none" … "samples,steering,paths,trees")
   planning::ReuseCounters counters;  //!< its leg counts and RRT-iterations histogram
 };
 
 //! Why a layout is not valid, or "" when it is: every object inside the room,
-//! no two objects overlapping, the door's clear zone free (exact predicates).
+//! no two objects overlapping, the door's clear zone free (exact predicates,
+//! contact allowed within geometry::kContactTolerance, as in the reader).
 std::string layout_violation(const geometry::Scene& scene);
 //! The same for object `index` only, against the room, door zone and others.
 std::string object_violation(const geometry::Scene& scene, int index);

@@ -1,7 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The output files of `hrspace design` (optimize/design_io.h): their texts,
 // and writing them so that no failure leaves a truncated file behind.
 
 #include "optimize/design_io.h"
+#include "optimize/preferences_json.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -16,6 +18,7 @@
 #include <sstream>
 
 #include "geometry/error.h"
+#include "geometry/version.h"
 #include "planning/tour_json.h"
 
 namespace hrs::optimize {
@@ -235,6 +238,8 @@ json sequences_json(const DesignResult& result) {
 //! proposals fared, what was planned or skipped, costs, time and trace.
 json run_report_json(const DesignResult& result, const RunInfo& info) {
   return {{"scene", result.layout.name},
+          {"version", hrs::version()},
+          {"commit", hrs::commit()},
           {"seed", info.seed},
           {"planner", info.planner},
           {"iterations", info.iterations},
@@ -256,10 +261,14 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"proposals", result.unblock.proposals},
             {"accepted", result.unblock.accepted}}},
           {"covering_moves", result.covering_moves},
+          {"polish", {{"tried", result.polish.tried}, {"kept", result.polish.kept}}},
           {"refused_legs",
            {{"legs", result.legs_refused},
             {"reachability_fills", result.gate_fills},
             {"reachability_ms", result.gate_ms}}},
+          {"preferences", preferences_json(result.preferences)},
+          {"preferences_initial",
+           {{"met", result.preferences_initial.met}, {"total", result.preferences_initial.total}}},
           {"cost",
            {{"initial", result.initial.total()},
             {"final", result.final.total()},

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The files of one design (docs/design-notes.md "Output shapes"): layout.json (a valid
 // scene with the optimized poses), tours.json (the M tours of the best

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The action-object (AO) graph and the M most likely object sequences that the
 // wheelchair must tour (paper §III-A), plus the per-object path-cost scale α_i

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A small fixed pool of worker threads for the M tours of one annealing
 // iteration (paper §III-E plans M = 10 tours per layout; docs/design-notes.md wants them

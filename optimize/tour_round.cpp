@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One planning round of a design run; see tour_round.h.
 
 #include "optimize/tour_round.h"
@@ -20,19 +21,22 @@ TourRound::TourRound(const geometry::Scene& scene, const DesignOptions& options,
       invalidated_(sequences.size(), 0),
       blockage_(sequences.size()),
       finished_(sequences.size(), 0) {
-  if (options.proposed) {
-    reuse_ = std::make_unique<planning::ReusePlanner>(work_, cspace_, options.tour, options.reuse,
+  // The planner configuration decides whether RRTs skip tried goal nodes.
+  planning::TourOptions tour = options.tour;
+  tour.planner.skip_tried_goal_nodes = options.planner.goalskip;
+  if (options.planner.proposed) {
+    reuse_ = std::make_unique<planning::ReusePlanner>(work_, cspace_, tour, options.planner.reuse,
                                                       options.seed);
-    if (options.refuse_impossible) reuse_->set_gate(&gate_);
+    if (options.planner.refuse) reuse_->set_gate(&gate_);
   }
   planning::TourHooks hooks = reuse_ ? reuse_->hooks() : planning::TourHooks{};
-  if (!reuse_ && options.refuse_impossible) hooks.gate = &gate_;
+  if (!reuse_ && options.planner.refuse) hooks.gate = &gate_;
   hooks.cancel = &cancel_;
   hooks.stop = stop;
   for (std::size_t k = 0; k < sequences.size(); ++k) {
     hooks.tour = static_cast<int>(k);
     planners_.push_back(std::make_unique<planning::TourPlanner>(
-        work_, cspace_, options.tour, tour_seed(options.seed, 0, static_cast<int>(k)), hooks));
+        work_, cspace_, tour, tour_seed(options.seed, 0, static_cast<int>(k)), hooks));
   }
 }
 
@@ -110,7 +114,7 @@ TourRound::Outcome TourRound::plan(int iteration, std::optional<planning::ReuseC
 
 void TourRound::grade(int k) {
   blockage_[k].clear();
-  if (tours_[k].found || !options_.escape) return;
+  if (tours_[k].found || !options_.planner.escape) return;
   blockage_[k] = stop_grades(k);
 }
 
@@ -152,7 +156,7 @@ std::vector<double> TourRound::certain_floors(const CostModel& model) {
       unfound.found = false;
       unfound.stats.depth = static_cast<int>(i) - 1;
       const std::vector<double> grades =
-          options_.escape ? stop_grades(static_cast<int>(k)) : std::vector<double>{};
+          options_.planner.escape ? stop_grades(static_cast<int>(k)) : std::vector<double>{};
       floors[k] = model.tour_total(static_cast<int>(k), unfound, grades);
       break;
     }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One planning round of a design run: the M tours of the current layout,
 // planned in parallel by the baseline or the proposed planner, with the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Paper §V-A in the leg planner: the RS-decomposition (rs/decomposition.h)
 // as the RRT's source of random targets (DecompositionSampler: targets drawn

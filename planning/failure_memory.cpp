@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "planning/failure_memory.h"
 
 #include "planning/moved_objects.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Memory of failed legs (beyond the paper; the proposed planner's `failures`
 // and `backoff` techniques). A failed RRT run is kept with its ends, the

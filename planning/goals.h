@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Goal poses around an object (paper §III-C, Fig. "goal"): N poses sampled
 // uniformly along the object's outline, N proportional to its perimeter over

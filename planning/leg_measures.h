@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Measurements of found legs kept across the tours and iterations of a
 // design run (part of the proposed planner, §V; technique `metrics` in

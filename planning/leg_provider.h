@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The seam between tours and the proposed planner (paper §V): a tour asks a
 // LegProvider for whole legs by key (the object pair and goal-pose slots)

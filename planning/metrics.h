@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Path metrics that the path cost of §III-D is built from (docs/design-notes.md
 // "Costs"): length, rotation (sum of wrapped heading changes between

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Continuous collision checking of Reeds–Shepp motions (the paper's planner
 // checks every RRT edge against furniture and walls, §III-B). Each segment is

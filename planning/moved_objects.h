@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The one proof behind three of the proposed planner's shortcuts (§V and
 // beyond): a stored path served without a check (PathDatabase::still_free),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Nearest tree nodes for the RRT of §III-B, which first keeps the k nearest
 // nodes by a weighted Euclidean distance and then picks the one with the

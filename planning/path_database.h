@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Paper §V-B: the path database. Paths found in earlier layouts (and by the
 // other tours of the same layout) are kept by leg key and served again when

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Small operations on Reeds–Shepp paths that the planner needs when it grows
 // a tree edge by edge (§III-B) and joins legs into tours (§III-C): cutting a

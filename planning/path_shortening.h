@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shortcutting of found paths (beyond the paper; the proposed planner's
 // `shortcuts` technique): RRT legs wander, and a stored path that is reused

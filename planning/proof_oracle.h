@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Infeasibility proofs for legs (beyond the paper; the proposed planner's
 // opt-in `proofs` technique): geometry::FreeGrid certifies an outer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Refusing impossible legs once their RRT has run a while, and measuring how
 // blocked a layout is (beyond the paper; docs/optimize.md "Refused legs",

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The last guard on every output: a found tour is certified again, leg by
 // leg, with the continuous collision checks before a design may count it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The proposed planner (paper §V); see reuse.h.
 
 #include "planning/reuse.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The proposed planner (paper §V): reuse across the hundreds of similar
 // planning problems of one design run, each technique switchable alone.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the proposed planner did, counted per design run and per iteration
 // (report.json "legs", the harness's measures, Fig. "rrt-it"'s histogram).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "planning/reuse_options.h"
 
 #include <algorithm>
@@ -5,17 +6,28 @@
 namespace hrs::planning {
 
 const std::array<ReuseOptions::Technique, 11>& ReuseOptions::techniques() {
-  static const std::array<Technique, 11> list{{{"samples", &ReuseOptions::samples},
-                                               {"steering", &ReuseOptions::steering},
-                                               {"paths", &ReuseOptions::paths},
-                                               {"trees", &ReuseOptions::trees},
-                                               {"failures", &ReuseOptions::failures},
-                                               {"shortcuts", &ReuseOptions::shortcuts},
-                                               {"budget", &ReuseOptions::budget},
-                                               {"metrics", &ReuseOptions::metrics},
-                                               {"backoff", &ReuseOptions::backoff},
-                                               {"speculate", &ReuseOptions::speculate},
-                                               {"proofs", &ReuseOptions::proofs}}};
+  static const std::array<Technique, 11> list{{{"samples", &ReuseOptions::samples,
+                                                "RRT samples from the RS-decomposition (§V-A)"},
+                                               {"steering", &ReuseOptions::steering,
+                                                "RS look-ups through the decomposition, exact fallback (§V-A)"},
+                                               {"paths", &ReuseOptions::paths,
+                                                "path database, within and across iterations, repaired when ends move (§V-B)"},
+                                               {"trees", &ReuseOptions::trees,
+                                                "RRT trees kept while their root barely moves (§V-C)"},
+                                               {"failures", &ReuseOptions::failures,
+                                                "a failed leg is not re-planned while no object moved within reach of its RRT (ours, exact)"},
+                                               {"shortcuts", &ReuseOptions::shortcuts,
+                                                "every stored path is shortened first (ours)"},
+                                               {"budget", &ReuseOptions::budget,
+                                                "opt-in: fresh plans stop after 300 RRT iterations (budget=N: after N; ours, costs tours)"},
+                                               {"metrics", &ReuseOptions::metrics,
+                                                "a found leg's clearance metrics and re-certification are kept and updated (ours, exact)"},
+                                               {"backoff", &ReuseOptions::backoff,
+                                                "opt-in: a leg that keeps failing gets half the budget each time, down to 120 (backoff=N; ours)"},
+                                               {"speculate", &ReuseOptions::speculate,
+                                                "a tour waiting for a leg plans its own next candidate meanwhile (ours, same results)"},
+                                               {"proofs", &ReuseOptions::proofs,
+                                                "opt-in: a leg unplanned after 300 iterations whose ends a certified grid separates fails (ours; rarely pays)"}}};
   return list;
 }
 

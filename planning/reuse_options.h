@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The proposed planner's switches (paper §V and our additions): which reuse
 // techniques are on and their parameters, and their names (names(), which
@@ -96,6 +97,7 @@ struct ReuseOptions {
   struct Technique {
     const char* name;
     bool ReuseOptions::*on;
+    const char* what;  //!< one line for --help and the docs
   };
   //! Every technique, in the order names() lists them: the one list that
   //! api::parse_reuse(), names(), any() and none() go through.

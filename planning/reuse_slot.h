@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One key's shared outcome in an iteration of the proposed planner
 // (ReusePlanner, planning/reuse.h): what stage A (the database) and stage B

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "planning/rrt.h"
 
 #include <algorithm>
@@ -189,11 +190,15 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   if (ends_free && pose_gap(from, to) <= options_.goal_tolerance) goal_node = 0;
   const int iteration_cap = max_iterations >= 0 ? max_iterations : options_.max_iterations;
   int it = 0;
+  bool asked = false;
   while (ends_free && goal_node < 0 && it < iteration_cap &&
          static_cast<int>(tree.nodes.size()) < options_.max_nodes) {
-    if (check && it == check->after && check->give_up && check->give_up()) {
-      result.gave_up = true;
-      break;
+    if (check && it == check->after && check->give_up) {
+      asked = true;
+      if (check->give_up()) {
+        result.gave_up = true;
+        break;
+      }
     }
     ++it;
     // Goal bias (§III-B): the goal itself, else a sample (one draw each).
@@ -204,6 +209,11 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
     }
   }
 
+  // A search that ends (iteration cap or tree size) before `after` without
+  // the goal still gets its question: a cap below `after` must not mean
+  // that the check is never asked.
+  if (ends_free && goal_node < 0 && !asked && check && check->give_up && check->give_up())
+    result.gave_up = true;
   result.found = goal_node >= 0;
   if (result.found) result.path = tree.path_to(goal_node, radius_);
   result.stats.iterations = it;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The leg planner: RRT with Reeds–Shepp steering, the paper's baseline
 // (§III-B, after LaValle 1998 and Dolgov et al. 2008). Each iteration draws a
@@ -67,7 +68,8 @@ struct LegStats {
 };
 
 //! A question the RRT asks once, after `after` iterations without reaching
-//! the goal: true stops it there (not found). The rest of the run is the
+//! the goal, or when it stops earlier without the goal (a smaller iteration
+//! cap or a full tree): true stops it there (not found, `gave_up`). The rest of the run is the
 //! same as without it, draw for draw (the baseline asks whether the free
 //! grid separates the leg's ends: then no RRT could find it).
 struct GiveUpCheck {

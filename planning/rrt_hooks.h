@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The two points where the RRT of planning/rrt.h can be changed without
 // touching it (paper §III-B for the baseline, §V-A for the proposed

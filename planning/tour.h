@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tours (paper §III-C): the wheelchair leaves the door and stops at each
 // object of a sequence in order. Each object gets goal poses around it

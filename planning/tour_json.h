@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // JSON text of legs and tours in the shapes of docs/design-notes.md "Output shapes"
 // (the `plan` object and the entries of tours.json). Field names there are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What a tour is made of and how it is planned (paper §III-C): the options,
 // the reuse hooks of the proposed planner (§V), the legs, their counters and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Paper §V-C: RRT trees kept between layouts, rooted at goal poses, reused
 // while their root barely moves and rebuilt past a node count (the paper's

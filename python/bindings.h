@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared pieces of the Python module's binding files (python/*.cpp): the
 // Scene wrapper, pose conversion, JSON text to Python objects. Each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace.design and hrspace.Design: the layout optimizer of `hrspace design`
 // (optimize::design with api::design_options), its results as Python
 // objects and save() writing the command's four files through the same
@@ -66,10 +67,11 @@ py::dict step_dict(const optimize::DesignStep& s, const geometry::Scene& scene, 
 
 py::object run_design(const PyScene& scene, long long seed, long long iterations,
                       const std::string& planner, const std::optional<std::string>& reuse,
-                      long long threads, const py::object& progress) {
+                      const std::optional<std::string>& disable, long long threads,
+                      const py::object& progress) {
   scene.validate();
   geometry::require_sequences(scene.scene, scene.label);
-  const auto choice = api::choose_planner(planner, reuse, api::kDesignReuse);
+  const optimize::PlannerConfig choice = api::design_planner(planner, reuse, disable);
   const optimize::DesignOptions options = api::design_options(
       static_cast<std::uint64_t>(in_range("seed", seed, 0, 1LL << 53)),
       static_cast<int>(in_range("iterations", iterations, 0, 100000000)),
@@ -100,7 +102,7 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
     design->result = optimize::design(scene.scene, options, &stop, step_done);
   }
   if (failure) std::rethrow_exception(failure);
-  design->info = {options.seed, api::planner_name(choice), static_cast<int>(iterations)};
+  design->info = {options.seed, choice.name(), static_cast<int>(iterations)};
   design->label = scene.label;
   design->tours = json_loads(optimize::tours_document(design->result))["tours"];
   design->report = json_loads(optimize::report_document(design->result, design->info));
@@ -173,19 +175,23 @@ void bind_design_result(py::module_& m) {
 
 void bind_design(py::module_& m) {
   bind_design_result(m);
+  static const std::string doc =
+      "Optimizes the scene's furniture layout as `hrspace design` does (simulated annealing, "
+      "every layout toured by the wheelchair) and returns a Design. seed, iterations, "
+      "planner (a preset, then optional comma items, as --planner), reuse (replaces the "
+      "proposed planner's techniques, as --reuse), disable (design-loop switches to turn off, "
+      "as --disable) and threads (0: all cores; results do not depend on it) are the "
+      "command's options. progress(step) is called after every iteration with a dict (the "
+      "fields of report.json's trace: iteration from 1, iterations, temperature, object, valid, "
+      "accepted, proposed, current, best, planning_ms). The GIL is released while it runs. "
+      "Ctrl-C stops the run at the end of the current iteration and raises KeyboardInterrupt "
+      "whose `design` attribute holds the best design so far; an exception raised by progress "
+      "stops it the same way.\n\nplanner:\n" +
+      optimize::PlannerConfig::help();
   m.def("design", &run_design, py::arg("scene"), py::kw_only(), py::arg("seed") = 1,
-        py::arg("iterations") = 700, py::arg("planner") = "baseline",
-        py::arg("reuse") = py::none(), py::arg("threads") = 0, py::arg("progress") = py::none(),
-        "Optimizes the scene's furniture layout as `hrspace design` does (simulated annealing, "
-        "every layout toured by the wheelchair) and returns a Design. seed, iterations, "
-        "planner ('baseline' or 'proposed'), reuse (the proposed planner's techniques) and "
-        "threads (0: all cores; results do not depend on it) are the command's options. "
-        "progress(step) is called after every iteration with a dict (the fields of report.json's "
-        "trace: iteration from 1, iterations, temperature, object, valid, accepted, proposed, "
-        "current, best, planning_ms). The "
-        "GIL is released while it runs. Ctrl-C stops the run at the end of the current "
-        "iteration and raises KeyboardInterrupt whose `design` attribute holds the best "
-        "design so far; an exception raised by progress stops it the same way.");
+        py::arg("iterations") = 700, py::arg("planner") = "default",
+        py::arg("reuse") = py::none(), py::arg("disable") = py::none(), py::arg("threads") = 0,
+        py::arg("progress") = py::none(), doc.c_str());
 }
 
 }  // namespace hrs::python

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace.CSpace (collision and clearance of many poses per call, the GIL
 // released) and hrspace.rs (Reeds-Shepp shortest paths and sampling).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace._core: the extension behind `import hrspace` (docs/python.md).
 // Errors: hrs::InputError becomes ValueError with the command line's
 // one-line message, hrs::OutputError becomes OSError.
@@ -5,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include "geometry/error.h"
+#include "geometry/version.h"
 #include "python/bindings.h"
 
 namespace hrs::python {
@@ -31,6 +33,8 @@ PYBIND11_MODULE(_core, m) {
       PyErr_SetString(PyExc_OSError, e.what());
     }
   });
+  m.attr("__version__") = hrs::version();
+  m.attr("__commit__") = hrs::commit();
   hrs::python::bind_scene(m);
   hrs::python::bind_geometry(m);
   auto rs = m.def_submodule("rs", "Reeds-Shepp curves: shortest paths and sampling.");

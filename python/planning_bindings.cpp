@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace.plan and hrspace.tour: one leg and one tour in a scene's layout,
 // through the same code as `hrspace plan` and `hrspace tour`
 // (api/operations.h), returned as the command's JSON object parsed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // hrspace.Scene and hrspace.Object: a scene file's data, readable and
 // editable from Python, validated by the same reader as the command line.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RS-decomposition by adaptive sampling (paper §V-A); see decomposition.h.
 
 #include "rs/decomposition.h"

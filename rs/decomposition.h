@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The RS-decomposition (paper §V-A): the configuration space around a start
 // pose, partitioned approximately by the word of the shortest Reeds–Shepp

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A small kd-tree over poses (x, y, θ) for the RS-decomposition's
 // nearest-neighbour look-ups (paper §V-A). The metric is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Operations on Reeds–Shepp paths as segment lists (rs/reeds_shepp.h): length
 // and word, driving a path from a pose (exact arcs and lines), sampling,
 // reversal and concatenation. The shortest-path formulas are in

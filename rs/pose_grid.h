@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A bucket grid over poses (x, y, θ) for the RS-decomposition's nearest-
 // neighbour look-ups (paper §V-A), with the metric of PoseKdTree (pose_metric2):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reeds–Shepp shortest paths (paper §III-B, §V-A).
 //
 // Formulas: J. A. Reeds and L. A. Shepp, "Optimal paths for a car that goes

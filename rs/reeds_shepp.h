@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reeds–Shepp curves (Reeds & Shepp 1990; the paper's steering function,
 // §III-B, and the RS-decomposition of §V-A): shortest paths of a car that

@@ -5,7 +5,10 @@
 #   scripts/reproduce.sh [--quick] [--out DIR] [--jobs N] [--publish] [STUDY ...]
 #
 # Studies: hrspace experiment list. Runs already stored under DIR are
-# skipped, so an interrupted reproduction resumes where it stopped.
+# skipped, so an interrupted reproduction resumes where it stopped; a stored
+# run of other options (another commit, iterations, scene) is refused. The
+# smoke run (--quick) and the full run have their own default DIR, so the
+# one never mixes into the other.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
@@ -14,11 +17,14 @@ usage() {
 usage: scripts/reproduce.sh [--quick] [--out DIR] [--jobs N] [--publish] [STUDY ...]
 
 Runs the studies of the experiments harness (default: all of them) into DIR
-(default out/reproduce), then draws the figures into DIR/figures and writes
-DIR/REPRODUCTION.md (the paper's claims against ours).
+(default out/reproduce, with --quick out/reproduce-quick), then draws the
+figures into DIR/figures and writes DIR/REPRODUCTION.md (the paper's claims
+against ours). Runs already stored in DIR are skipped; a stored run made with
+other options, scenes or code is refused (exit 2), never mixed in.
 
-  --quick      2 seeds, 100 iterations, the smallest sweeps (a smoke run, minutes)
-  --out DIR    output root (default out/reproduce)
+  --quick      2 seeds, 100 iterations, the smallest sweeps (a smoke run, minutes);
+               default DIR out/reproduce-quick
+  --out DIR    output root (default out/reproduce, or out/reproduce-quick)
   --jobs N     designs run at once, one thread each (default 1)
   --publish    also copy the figures, summaries and REPRODUCTION.md into
                paper_figures/ (what README and docs embed)
@@ -29,7 +35,7 @@ Environment: HRSPACE_BIN uses that hrspace binary instead of building one.
 USAGE
 }
 
-out="$root/out/reproduce"
+out=""
 jobs=1
 quick=()
 publish=()
@@ -39,8 +45,8 @@ while [ $# -gt 0 ]; do
     -h|--help) usage; exit 0 ;;
     --quick) quick=(--quick) ;;
     --publish) publish=(--publish) ;;
-    --out) [ $# -ge 2 ] || { echo "reproduce.sh: --out needs a directory" >&2; exit 2; }; out="$2"; shift ;;
-    --out=*) out="${1#--out=}" ;;
+    --out) [ $# -ge 2 ] && [ -n "$2" ] || { echo "reproduce.sh: --out needs a directory" >&2; exit 2; }; out="$2"; shift ;;
+    --out=*) out="${1#--out=}"; [ -n "$out" ] || { echo "reproduce.sh: --out needs a directory" >&2; exit 2; } ;;
     --jobs) [ $# -ge 2 ] || { echo "reproduce.sh: --jobs needs a number" >&2; exit 2; }; jobs="$2"; shift ;;
     --jobs=*) jobs="${1#--jobs=}" ;;
     -*) echo "reproduce.sh: unknown option $1 (see --help)" >&2; exit 2 ;;
@@ -50,6 +56,10 @@ while [ $# -gt 0 ]; do
 done
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "reproduce.sh: --jobs '$jobs': expected a whole number >= 1" >&2; exit 2; }
 [ ${#studies[@]} -gt 0 ] || studies=(all)
+if [ -z "$out" ]; then
+  # A smoke run never shares its default root with the full run.
+  if [ ${#quick[@]} -gt 0 ]; then out="$root/out/reproduce-quick"; else out="$root/out/reproduce"; fi
+fi
 
 if [ -n "${HRSPACE_BIN:-}" ]; then
   bin="$HRSPACE_BIN"

@@ -12,5 +12,6 @@ Bad input raises ``ValueError`` with the command line's one-line message.
 
 from . import rs
 from ._core import CSpace, Design, Object, Scene, design, plan, tour
+from ._core import __commit__, __version__
 
 __all__ = ["CSpace", "Design", "Object", "Scene", "design", "plan", "rs", "tour"]

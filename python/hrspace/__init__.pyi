@@ -8,6 +8,11 @@ import numpy.typing as npt
 
 from . import rs as rs
 
+__version__: str
+"""The version of hrspace, as `hrspace --version` prints it ("0.9.0")."""
+__commit__: str
+"""The git commit it was built from (short hash), or "unknown"."""
+
 Pose = Sequence[float]
 """(x, y, theta): metres and radians."""
 
@@ -185,8 +190,9 @@ def design(
     *,
     seed: int = 1,
     iterations: int = 700,
-    planner: str = "baseline",
+    planner: str = "default",
     reuse: Optional[str] = None,
+    disable: Optional[str] = None,
     threads: int = 0,
     progress: Optional[Callable[[Dict[str, Any]], None]] = None,
 ) -> Design:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The --reuse list syntax (api/reuse_list.h): the parser against the options
 // it must produce, and against ReuseOptions::names() on random switch sets.
 

@@ -42,6 +42,15 @@ sed 's/"width": 0.9/"width": -0.9/' "$src/scenes/bedroom.json" >"$tmp/neg.json"
 check "validate negative door width" 2 "$bin" validate "$tmp/neg.json"
 expect_err "negative width names the pointer" "/door/width"
 check "validate without a scene" 2 "$bin" validate
+# An angle larger than 2π is legal but looks like degrees: a warning, exit 0.
+sed 's/"pose": \[3.4, 1.8, 0.0\]/"pose": [3.4, 1.8, 360]/' "$src/scenes/office.json" >"$tmp/deg.json"
+check "validate heading in degrees" 0 "$bin" validate "$tmp/deg.json"
+expect_err "degrees warning" "warning: .*deg.json: /objects/1/pose/2: angle 360 is larger than 2π"
+# Furniture 0.01 m past a wall: refused, naming the wall and the amount.
+sed 's/"pose": \[4.815, 3.0, 3.141592653589793\]/"pose": [4.835, 3.0, 3.141592653589793]/' \
+  "$src/scenes/office.json" >"$tmp/out.json"
+check "validate past the wall" 2 "$bin" validate "$tmp/out.json"
+expect_err "past the wall message" '/objects/2/pose: the footprint of "bookshelf" sticks out 0.01 m past the wall from (5,0) to (5,4)'
 check "unknown command" 2 "$bin" frobnicate
 check "unknown option" 2 "$bin" collide "$src/scenes/bedroom.json" --posse x
 check "help" 0 "$bin" --help
@@ -80,7 +89,7 @@ check "plan proposed" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --pla
 grep -q '"found": *true' "$tmp/out" || { echo "FAIL: plan proposed found no path"; fails=$((fails + 1)); }
 check "plan proposed samples only" 0 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse samples
 check "plan reuse without proposed" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --reuse samples
-expect_err "reuse needs proposed" "--reuse needs --planner proposed"
+expect_err "reuse needs proposed" "--reuse needs --planner default"
 check "plan reuse across layouts" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse paths
 expect_err "plan rejects paths" "--reuse: 'paths'"
 check "plan unknown planner" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner fast
@@ -154,6 +163,19 @@ sed 's/\[4.5, 0\], \[4.5, 4.0\], \[0, 4.0\]/[1500, 0], [1500, 4.0], [0, 4.0]/' "
 grep -q 1500 "$tmp/km.json" || { echo "FAIL: km.json not made"; fails=$((fails+1)); }
 check "LateChecksComeFirst room beyond 1 km" 2 "$bin" validate "$tmp/km.json"
 expect_err "LateChecksComeFirst room pointer" "/room/polygon/1/0: must be within"
+# design --planner: presets and items, refused before any work with one line.
+check "design unknown preset" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner fast
+expect_err "design unknown preset named" "--planner: unknown planner preset 'fast' (default, baseline, paper, literal)"
+check "design technique on the RRT" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner baseline,trees
+expect_err "design technique on the RRT named" "'trees': the baseline preset plans each leg with the RRT"
+check "design preset with items" 0 "$bin" design "$bed" --out "$tmp/dp" --iterations 2 --planner literal,goalskip
+grep -q '"planner": "literal,goalskip"' "$tmp/dp/report.json" || { echo "FAIL: report.json planner name"; fails=$((fails+1)); }
+check "design default preset" 0 "$bin" design "$bed" --out "$tmp/dd" --iterations 2
+grep -q '"planner": "default"' "$tmp/dd/report.json" || { echo "FAIL: default planner not in report.json"; fails=$((fails+1)); }
+"$bin" design --help >"$tmp/help"
+for p in default baseline paper literal goalskip refuse escape early samples steering paths trees; do
+  grep -q "^    $p " "$tmp/help" || { echo "FAIL: design --help lacks $p"; fails=$((fails+1)); }
+done
 # StdoutWriteErrorsAreExitOne: every subcommand checks its output.
 # generate: rooms and witnesses that pass validate, the same for a seed and
 # any --threads, one-line errors naming the option for bad values

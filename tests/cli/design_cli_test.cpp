@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `hrspace design` end to end: exit statuses (2 on bad input, 130 after
 // Ctrl-C, 128 + signal after SIGTERM or SIGHUP, with the best design so far
 // written; 130 and nothing written after a Ctrl-C before the first

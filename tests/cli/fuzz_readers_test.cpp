@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Seeded mutation fuzzing of the readers at hrspace's boundary (issue 20,
 // docs/hardening.md): the scene reader (parse_scene) and the numeric CSV
 // reader of `collide` and `rs` (read_numeric_csv). The corpus is the shipped

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile inputs, one test per class of issue 20 (docs/hardening.md): every
 // bad scene is refused with one line "FILE: /pointer: what" (InputError),
 // never a crash, and the inner loops that used to blow up on small inputs
@@ -205,6 +206,7 @@ TEST(Hardening, LongLoopsHonourAStopRequest) {
   EXPECT_THROW(hrs::planning::local_goal_poses(scene, scene.objects[0], {}, &stop),
                hrs::Interrupted);
   hrs::optimize::DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.iterations = 5;
   EXPECT_THROW(hrs::optimize::design(scene, options, &stop), hrs::Interrupted);
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plans one wheelchair leg with an installed hrspace: reads a scene, builds
 // its C-space and runs the baseline RRT between two poses.
 // Usage: plan_one_leg SCENE x0 y0 t0 x1 y1 t1; exit 0 when a path is found.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The experiments harness (experiments/): CSV tables, aggregation against
 // hand-computed values, shard selection, and the runner's resume and
 // shard/merge behaviour on a small synthetic study whose runs are pure
@@ -24,8 +25,8 @@ namespace fs = std::filesystem;
 using namespace hrs::experiments;
 
 fs::path temp_dir(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("hrspace_harness_" + name + "_" +
-                                                  std::to_string(::getpid()));
+  const fs::path p =
+      fs::temp_directory_path() / ("hrspace_harness_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   fs::create_directories(p);
   return p;
@@ -286,6 +287,306 @@ TEST(Runner, AFailingRunIsReportedAndTheOthersAreStored) {
   ASSERT_EQ(r.errors.size(), 1u);
   EXPECT_EQ(r.errors[0], "synthetic-x-s2: boom");
   fs::remove_all(config.out);
+}
+
+// --- results that cannot be mixed (issue 33) ----------------------------------
+
+//! The synthetic study with a room parameter and a Study::identity that
+//! digests the room's file, like the real studies' scene_digest.
+Study study_with_scenes(std::atomic<int>* executed, const fs::path& scene) {
+  Study s = synthetic_study(executed);
+  const auto inner = s.runs;
+  s.runs = [inner, scene](const StudyConfig& c) {
+    std::vector<RunSpec> runs = inner(c);
+    for (RunSpec& r : runs) r.params.set("room", scene.string());
+    return runs;
+  };
+  s.identity = [](const RunSpec& spec, const StudyConfig&) {
+    Row id;
+    id.set("scene_digest", file_digest(*spec.params.get("room")));
+    return id;
+  };
+  return s;
+}
+
+//! The message of the hrs::InputError `f` throws; a failure when it throws none.
+template <class F>
+std::string input_error(F&& f) {
+  try {
+    f();
+  } catch (const hrs::InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no hrs::InputError";
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(Identity, RunRowsCarryEveryColumnThatDeterminesTheRun) {
+  std::atomic<int> executed{0};
+  const fs::path dir = temp_dir("columns");
+  write_text_atomic(dir / "room.json", "{}");
+  const Study study = study_with_scenes(&executed, dir / "room.json");
+  StudyConfig config;
+  config.seeds = 1;
+  config.iterations = 123;
+  config.threads = 3;
+  config.out = dir / "out";
+  ASSERT_EQ(run_study(study, config, {}).done, 2);
+  const Table rows = parse_csv(read_text(config.out / "synthetic" / "runs.csv"), "runs.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  for (const Row& r : rows) {
+    EXPECT_EQ(r.get("iterations"), "123");
+    EXPECT_EQ(r.get("threads"), "3");
+    EXPECT_EQ(r.get("quick"), "0");
+    EXPECT_EQ(r.get("version"), code_version());
+    EXPECT_EQ(r.get("commit"), code_commit());
+    EXPECT_EQ(r.get("scene_digest"), file_digest(dir / "room.json"));
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Identity, FileDigestIsFnv1a64OfTheBytes) {
+  const fs::path dir = temp_dir("digest");
+  write_text_atomic(dir / "empty", "");
+  write_text_atomic(dir / "a", "a");
+  write_text_atomic(dir / "foobar", "foobar");
+  EXPECT_EQ(file_digest(dir / "empty"), "cbf29ce484222325");  // the offset basis
+  EXPECT_EQ(file_digest(dir / "a"), "af63dc4c8601ec8c");
+  EXPECT_EQ(file_digest(dir / "foobar"), "85944171f73967e8");
+  EXPECT_TRUE(contains(input_error([&] { file_digest(dir / "missing"); }), "missing"));
+  EXPECT_TRUE(contains(input_error([&] { file_digest(dir); }), "is a directory"));
+  fs::remove_all(dir);
+}
+
+TEST(Identity, ARerunWithOtherIterationsIsRefusedNamingTheColumn) {
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  StudyConfig config;
+  config.seeds = 2;
+  config.iterations = 100;
+  config.out = temp_dir("iterations");
+  ASSERT_EQ(run_study(study, config, {}).done, 4);
+  const std::string stored = read_text(config.out / "synthetic" / "runs.csv");
+  executed = 0;
+  StudyConfig other = config;
+  other.iterations = 50;
+  const std::string what = input_error([&] { run_study(study, other, {}); });
+  EXPECT_TRUE(contains(what, "iterations '100'")) << what;
+  EXPECT_TRUE(contains(what, "iterations '50'")) << what;
+  EXPECT_TRUE(contains(what, "synthetic-x-s1.csv")) << what;
+  EXPECT_EQ(executed.load(), 0);
+  EXPECT_EQ(read_text(config.out / "synthetic" / "runs.csv"), stored);
+  // So is another thread count, or a quick sweep; the same options resume.
+  other = config;
+  other.threads = 2;
+  EXPECT_TRUE(contains(input_error([&] { run_study(study, other, {}); }), "threads"));
+  other = config;
+  other.quick = true;
+  EXPECT_TRUE(contains(input_error([&] { run_study(study, other, {}); }), "quick"));
+  EXPECT_EQ(run_study(study, config, {}).skipped, 4);
+  EXPECT_EQ(executed.load(), 0);
+  fs::remove_all(config.out);
+}
+
+TEST(Identity, ARunOfAnotherShardIsCheckedToo) {
+  // Shard 2 of 2 into a root where shard 1 ran with other iterations: the
+  // tables would mix both, so it is refused before anything runs.
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  StudyConfig config;
+  config.seeds = 2;
+  config.iterations = 100;
+  config.out = temp_dir("othershard");
+  RunnerOptions first;
+  first.shard_index = 1;
+  first.shard_count = 2;
+  ASSERT_EQ(run_study(study, config, first).done, 2);
+  StudyConfig other = config;
+  other.iterations = 7;
+  RunnerOptions second = first;
+  second.shard_index = 2;
+  executed = 0;
+  EXPECT_TRUE(contains(input_error([&] { run_study(study, other, second); }), "iterations"));
+  EXPECT_EQ(executed.load(), 0);
+  fs::remove_all(config.out);
+}
+
+TEST(Identity, AnEditedSceneOfTheSameFileNameIsRefused) {
+  std::atomic<int> executed{0};
+  const fs::path dir = temp_dir("edited");
+  write_text_atomic(dir / "bedroom.json", "{\"v\": 1}\n");
+  const Study study = study_with_scenes(&executed, dir / "bedroom.json");
+  StudyConfig config;
+  config.seeds = 1;
+  config.out = dir / "out";
+  ASSERT_EQ(run_study(study, config, {}).done, 2);
+  EXPECT_EQ(run_study(study, config, {}).skipped, 2);
+  write_text_atomic(dir / "bedroom.json", "{\"v\": 2}\n");
+  executed = 0;
+  const std::string what = input_error([&] { run_study(study, config, {}); });
+  EXPECT_TRUE(contains(what, "scene_digest")) << what;
+  EXPECT_EQ(executed.load(), 0);
+  fs::remove_all(dir);
+}
+
+TEST(Identity, RunFilesOfAnOlderHrspaceAreRefused) {
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  StudyConfig config;
+  config.seeds = 1;
+  config.out = temp_dir("older");
+  ASSERT_EQ(run_study(study, config, {}).done, 2);
+  // The row as hrspace wrote it before runs carried their identity.
+  const fs::path file = config.out / "synthetic" / "runs" / "synthetic-y-s1.csv";
+  Row old;
+  const Table stored = parse_csv(read_text(file), file.string());
+  ASSERT_EQ(stored.size(), 1u);
+  for (const auto& [name, value] : stored[0].cells())
+    if (name != "iterations" && name != "version" && name != "quick") old.set(name, value);
+  write_text_atomic(file, to_csv({old}));
+  const std::string what = input_error([&] { run_study(study, config, {}); });
+  EXPECT_TRUE(contains(what, "older hrspace")) << what;
+  EXPECT_TRUE(contains(what, "synthetic-y-s1.csv")) << what;
+  fs::remove_all(config.out);
+}
+
+TEST(Identity, ARunFileWhoseKeyIsNotItsFileNameIsRefused) {
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  StudyConfig config;
+  config.seeds = 1;
+  config.out = temp_dir("renamed");
+  ASSERT_EQ(run_study(study, config, {}).done, 2);
+  const fs::path runs = config.out / "synthetic" / "runs";
+  fs::copy_file(runs / "synthetic-x-s1.csv", runs / "synthetic-y-s1.csv",
+                fs::copy_options::overwrite_existing);
+  std::string what = input_error([&] { run_study(study, config, {}); });
+  EXPECT_TRUE(contains(what, "synthetic-y-s1.csv: key cell 'synthetic-x-s1'")) << what;
+  what = input_error([&] { write_tables(study, config); });
+  EXPECT_TRUE(contains(what, "key cell")) << what;
+  StudyConfig merged = config;
+  merged.out = temp_dir("renamed_merged");
+  what = input_error([&] { merge_shards(study, merged, {config.out}); });
+  EXPECT_TRUE(contains(what, "key cell")) << what;
+  fs::remove_all(config.out);
+  fs::remove_all(merged.out);
+}
+
+TEST(Identity, ADirectoryWhereARunFileBelongsIsNamed) {
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  StudyConfig config;
+  config.seeds = 1;
+  config.out = temp_dir("dirfile");
+  const fs::path where = config.out / "synthetic" / "runs" / "synthetic-x-s1.csv";
+  fs::create_directories(where);
+  const std::string what = input_error([&] { run_study(study, config, {}); });
+  EXPECT_TRUE(contains(what, where.string() + ": is a directory")) << what;
+  EXPECT_FALSE(contains(what, "underflow")) << what;
+  EXPECT_EQ(executed.load(), 0);
+  EXPECT_TRUE(contains(input_error([&] { read_text(where); }), "is a directory"));
+  fs::remove_all(config.out);
+}
+
+TEST(Identity, OutputFailuresAreOutputErrorsWithTheSystemsReason) {
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  const fs::path dir = temp_dir("unwritable");
+  write_text_atomic(dir / "afile", "x");
+  StudyConfig config;
+  config.seeds = 1;
+  config.out = dir / "afile" / "sub";
+  try {
+    run_study(study, config, {});
+    FAIL() << "an output root under a file was accepted";
+  } catch (const hrs::OutputError& e) {
+    EXPECT_TRUE(contains(e.what(), (dir / "afile" / "sub").string())) << e.what();
+    EXPECT_TRUE(contains(e.what(), "Not a directory")) << e.what();
+  }
+  try {
+    write_text_atomic(dir / "missing" / "f.csv", "x");
+    FAIL() << "a write into a missing directory passed";
+  } catch (const hrs::OutputError& e) {
+    EXPECT_TRUE(contains(e.what(), "No such file or directory")) << e.what();
+  }
+  fs::remove_all(dir);
+}
+
+//! Runs shard i of n of `study` with `config` into a fresh root.
+fs::path run_shard(const Study& study, StudyConfig config, int i, int n, const std::string& name) {
+  config.out = temp_dir(name);
+  RunnerOptions o;
+  o.shard_index = i;
+  o.shard_count = n;
+  run_study(study, config, o);
+  return config.out;
+}
+
+TEST(Identity, MergeRefusesShardsOfOtherIterationsNamingTheColumn) {
+  std::atomic<int> executed{0};
+  const Study study = synthetic_study(&executed);
+  StudyConfig config;
+  config.seeds = 2;
+  config.iterations = 100;
+  StudyConfig other = config;
+  other.iterations = 50;
+  const fs::path a = run_shard(study, config, 1, 2, "merge_a");
+  const fs::path b = run_shard(study, other, 2, 2, "merge_b");
+  StudyConfig merged = config;
+  merged.out = temp_dir("merge_ab");
+  const std::string what = input_error([&] { merge_shards(study, merged, {a, b}); });
+  EXPECT_TRUE(contains(what, "iterations '100'")) << what;
+  EXPECT_TRUE(contains(what, "iterations '50'")) << what;
+  EXPECT_FALSE(fs::exists(merged.out / "synthetic"));  // nothing written
+  // A shard of the same sweep merges; the odd one is refused against what
+  // is merged already.
+  const fs::path c = run_shard(study, config, 2, 2, "merge_c");
+  EXPECT_EQ(merge_shards(study, merged, {a, c}), 0);
+  EXPECT_TRUE(contains(input_error([&] { merge_shards(study, merged, {b}); }), "iterations"));
+  for (const auto& p : {a, b, c, merged.out}) fs::remove_all(p);
+}
+
+TEST(Identity, MergeRefusesTwoDigestsOfOneRoom) {
+  std::atomic<int> executed{0};
+  const fs::path dir = temp_dir("merge_scene");
+  write_text_atomic(dir / "bedroom.json", "{\"v\": 1}\n");
+  const Study study = study_with_scenes(&executed, dir / "bedroom.json");
+  StudyConfig config;
+  config.seeds = 2;
+  const fs::path a = run_shard(study, config, 1, 2, "merge_scene_a");
+  write_text_atomic(dir / "bedroom.json", "{\"v\": 2}\n");
+  const fs::path b = run_shard(study, config, 2, 2, "merge_scene_b");
+  StudyConfig merged = config;
+  merged.out = temp_dir("merge_scene_ab");
+  const std::string what = input_error([&] { merge_shards(study, merged, {a, b}); });
+  EXPECT_TRUE(contains(what, "scene_digest")) << what;
+  for (const auto& p : {a, b, merged.out, dir}) fs::remove_all(p);
+}
+
+TEST(Identity, EveryRunOfTheShippedStudiesDigestsTheScenesItReads) {
+  StudyConfig config;
+  config.seeds = 1;
+  config.quick = true;
+  config.scenes_dir = HRSPACE_SCENES_DIR;
+  for (const Study& s : studies()) {
+    for (const RunSpec& r : s.runs(config)) {
+      const Row id = run_identity(s, r, config);
+      for (const std::string& c : sweep_columns()) EXPECT_TRUE(id.get(c)) << r.key << " " << c;
+      EXPECT_TRUE(id.get("scene_digest")) << r.key;
+      if (r.params.get("planner")) EXPECT_TRUE(id.get("planner_config")) << r.key;
+    }
+  }
+  // Scene names are looked up in --scenes: a directory without them is an
+  // InputError naming the missing file.
+  config.scenes_dir = "/nonexistent-scenes";
+  const Study& timing = *find_study("timing");
+  const std::string what =
+      input_error([&] { run_identity(timing, timing.runs(config).front(), config); });
+  EXPECT_TRUE(contains(what, "/nonexistent-scenes/bedroom.json")) << what;
 }
 
 TEST(Studies, EveryStudyHasDistinctRunKeysAndAQuickSweep) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The room zoo's feasibility by construction (slow: plans tours): for a
 // handful of seeds and every size bucket, the plant is accepted and every
 // tour of the witness is found by the product's design loop, checked again

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The room zoo (experiments/room_zoo.h): every generated room and witness
 // passes the reader, rooms are deterministic in their seed and respect the
 // object bounds and shapes, the witness meets every wall and relation

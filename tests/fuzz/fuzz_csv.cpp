@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the numeric CSV reader (cli::read_numeric_csv) on
 // arbitrary bytes, read both as `hrspace collide --poses` reads it
 // (x,y,theta) and as `hrspace rs --pairs` reads it (x0,y0,t0,x1,y1,t1), with

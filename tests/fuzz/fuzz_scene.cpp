@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the scene reader (geometry::parse_scene) on arbitrary
 // bytes (docs/hardening.md, "Fuzzing the readers"). The oracle is the seeded
 // GoogleTest fuzzer's (tests/cli/fuzz_readers_test.cpp): the reader returns

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Exhaustive randomized certification of the C-space against the exact CGAL
 // reference: ≥ 100 000 poses per scene and ≥ 10 000 straight and arc motions,
 // each motion re-checked pose by pose at 1 mm / 0.1°. Zero misses allowed;

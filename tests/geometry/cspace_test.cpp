@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // C-space tests against the exact CGAL reference (tests/geometry/reference.h),
 // analytic clearance cases, and incremental update vs rebuild.
 

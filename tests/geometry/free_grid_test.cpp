@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FreeGrid: a blocked cell holds only colliding poses (by the exact CGAL
 // reference, which shares nothing with the grid), a certified-free pose never
 // lies in a blocked cell, incremental moves equal a rebuild, and analytic

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The scene-format tests' fixture: a valid base scene touching every section,
 // and the helpers that break one rule of it and check the error message.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a scene derives from its data: polygon areas, world footprints, and
 // the door helpers (inward normal, clear zone, start pose) against hand values.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scene format rules of the objects, the relations, the AO graph (activity)
 // and the weights: one broken scene per rule of scene-format.md, each of which
 // must name the file, the exact JSON pointer and what is wrong.
@@ -90,9 +91,11 @@ TEST(SceneRules, ObjectPoseMustHaveThreeNumbers) {
 }
 TEST(SceneRules, ObjectMustBeInsideTheRoom) {
   // The table pokes 0.1 m through the right wall.
-  expect_broken([](Json& j) { set(j, "/objects/3/pose/0", 4.7); }, "/objects/3/pose", "inside");
+  expect_broken([](Json& j) { set(j, "/objects/3/pose/0", 4.7); }, "/objects/3/pose",
+                "the footprint of \"table\" sticks out 0.1 m past the wall from (5,0) to (5,4)");
   // Rotating the desk by 90 degrees puts its 1.6 m width across the top wall.
-  expect_broken([](Json& j) { set(j, "/objects/0/pose/2", 0.0); }, "/objects/0/pose", "inside");
+  expect_broken([](Json& j) { set(j, "/objects/0/pose/2", 0.0); }, "/objects/0/pose",
+                "sticks out 0.3 m past the wall from (5,4) to (0,4)");
 }
 TEST(SceneRules, ObjectInsideLShapedRoomMustAvoidTheNotch) {
   Json j = base();
@@ -102,7 +105,8 @@ TEST(SceneRules, ObjectInsideLShapedRoomMustAvoidTheNotch) {
   erase(j, "", "relations");
   EXPECT_NO_THROW(parse(j));
   set(j, "/objects/0/pose", Json::array({3.0, 2.5, 0}));  // in the bounding box, not the room
-  expect_rejected(j.dump(), "/objects/0/pose", "inside");
+  // Farthest out: the corner (3.4, 3.3), 1.3 m above the notch's wall y = 2.
+  expect_rejected(j.dump(), "/objects/0/pose", "sticks out 1.3 m past the wall from (5,2) to (2,2)");
 }
 TEST(SceneRules, FixedObjectsMustNotOverlap) {
   // The shelf moves onto the plant (both fixed).
@@ -243,6 +247,26 @@ TEST(SceneRules, RowSumToleranceIsOneMillionth) {
   EXPECT_NO_THROW(parse(j));
   set(j, "/activity/transitions/shelf/plant", 0.3 + 2e-6);
   expect_rejected(j.dump(), "/activity/transitions/shelf", "sum to 1");
+}
+TEST(SceneRules, RowSumToleranceIsTheSameAboveAndBelowOne) {
+  // |sum - 1| <= 1e-6 both ways: a row one millionth over 1 passes like one
+  // a millionth under it (the over side was refused by rounding).
+  for (const double plant : {0.300001, 0.299999, 0.3 + 1e-6, 0.3 - 1e-6}) {
+    Json j = base();
+    set(j, "/activity/transitions/shelf/plant", plant);
+    EXPECT_NO_THROW(parse(j)) << "plant " << plant;
+  }
+  for (const char* row :
+       {R"({"desk": 0.500001, "plant": 0.5})", R"({"desk": 0.499999, "plant": 0.5})"}) {
+    Json j = base();
+    set(j, "/activity/transitions/shelf", Json::parse(row));
+    EXPECT_NO_THROW(parse(j)) << row;
+  }
+  for (const double plant : {0.3000012, 0.2999988}) {
+    Json j = base();
+    set(j, "/activity/transitions/shelf/plant", plant);
+    expect_rejected(j.dump(), "/activity/transitions/shelf", "sum to 1");
+  }
 }
 TEST(SceneRules, PointerEscapesSlashAndTilde) {
   expect_broken(

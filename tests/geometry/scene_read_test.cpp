@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading scene files (`hrspace-scene/1`): the base scene's fields and the
 // defaults of absent optional fields, and the shipped scene files in scenes/
 // (their door clear zones, start poses and the variants they pair up as).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scene format rules of the document, the room, the door and the wheelchair:
 // one broken scene per rule of scene-format.md, each of which must name the
 // file, the exact JSON pointer and what is wrong.

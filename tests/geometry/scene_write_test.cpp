@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing scenes: load -> write -> load gives the same scene and the same
 // text, for every shipped scene file and for scenes using every optional field.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The annealer on toy costs: finds a known optimum, the Metropolis rule is
 // exact, fixed objects never move, invalid moves are never evaluated; early
 // rejection (Acceptance::rejects) rejects a bound only when every cost above

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Cost terms of §III-D against hand-computed layouts; the clearance term falls
 // as a corridor widens; an unreachable tour gets the documented penalty.
 #include "optimize/costs.h"

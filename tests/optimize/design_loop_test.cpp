@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The design loop's additions beyond the paper (optimize/design.h,
 // docs/optimize.md), each against the run without it:
 // - early rejection (DesignOptions::early_reject) makes the same accept
@@ -42,6 +43,7 @@ Scene shipped(const std::string& file) {
 //! Baseline design options with `seed`, `iterations` and two threads.
 DesignOptions options(std::uint64_t seed, int iterations) {
   DesignOptions o;
+  o.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   o.seed = seed;
   o.iterations = iterations;
   o.threads = 2;
@@ -100,7 +102,7 @@ TEST(DesignLoop, EarlyRejectionMakesTheSameDecisionsAsFullEvaluation) {
       DesignResult r[2];
       for (int early = 0; early < 2; ++early) {
         DesignOptions o = options(seed, 40);
-        o.early_reject = early == 1;
+        o.planner.early = early == 1;
         r[early] = design(scene, o);
       }
       const std::string what = file + " seed " + std::to_string(seed);
@@ -136,7 +138,7 @@ TEST(DesignLoop, RefusingImpossibleLegsLeavesTheBaselinesDesignUnchanged) {
       DesignResult r[2];
       for (int refuse = 0; refuse < 2; ++refuse) {
         DesignOptions o = options(seed, 40);
-        o.refuse_impossible = refuse == 1;
+        o.planner.refuse = refuse == 1;
         r[refuse] = design(scene, o);
       }
       const std::string what = file + " seed " + std::to_string(seed);
@@ -165,11 +167,11 @@ TEST(DesignLoop, ProposedPlannerWithEarlyRejectionIsTheSameWithOneAndTwoThreads)
       DesignResult r[2];
       for (int t = 0; t < 2; ++t) {
         DesignOptions o;
+        o.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
         o.seed = seed;
         o.iterations = 40;
         o.threads = t + 1;
-        o.proposed = true;
-        o.early_reject = true;
+        o.planner = hrs::optimize::PlannerConfig::from_preset("default");
         r[t] = design(scene, o);
         EXPECT_EQ(r[t].threads, t + 1);
       }
@@ -221,7 +223,7 @@ TEST(DesignLoop, AStopWithNoFreeGoalPoseIsMovedOut) {
   // scenes/narrow_passage.json --planner proposed --seed 5 --threads 2`).
   const Scene scene = shipped("narrow_passage.json");
   DesignOptions o = options(5, 700);
-  o.proposed = true;  // all techniques, as --planner proposed
+  o.planner = hrs::optimize::PlannerConfig::from_preset("default");
   const DesignResult r = design(scene, o);
   std::printf("narrow_passage proposed seed 5: tours %d/%d, cost %.4f\n", r.final.tours_found,
               r.final.tours_total, r.final.total());

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Design outputs checked independently of the annealer: the written layout
 // is a valid scene with every object inside the room, no overlaps, the door
 // zone free, fixed objects and all sizes unchanged, and every tour of
@@ -96,10 +97,12 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
       EXPECT_EQ(o.pose, in.pose) << "fixed object " << o.id << " moved";
     }
     const Polygon fp = geometry::world_footprint(o);
-    EXPECT_TRUE(geometry::polygon_inside(fp, out.room.polygon)) << o.id << " outside the room";
-    EXPECT_FALSE(geometry::interiors_overlap(fp, zone)) << o.id << " in the door zone";
+    // Contact within geometry::kContactTolerance is valid (as in the reader).
+    EXPECT_TRUE(geometry::inside_with_contact(fp, out.room.polygon)) << o.id << " outside the room";
+    EXPECT_FALSE(geometry::overlap_beyond_contact(fp, zone)) << o.id << " in the door zone";
     for (std::size_t j = i + 1; j < out.objects.size(); ++j)
-      EXPECT_FALSE(geometry::interiors_overlap(fp, geometry::world_footprint(out.objects[j])))
+      EXPECT_FALSE(
+          geometry::overlap_beyond_contact(fp, geometry::world_footprint(out.objects[j])))
           << o.id << " overlaps " << out.objects[j].id;
   }
 
@@ -158,6 +161,7 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
 TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
   const Scene scene = geometry::load_scene(kBedroom);
   DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.seed = 1;  // a seed whose 25 iterations reach found tours, so they are checked
   options.iterations = 25;
   options.threads = 2;
@@ -186,6 +190,7 @@ TEST(Design, SameSeedGivesByteIdenticalFilesWithOneAndTwoThreads) {
   std::string layout[2], tours[2];
   for (int t = 0; t < 2; ++t) {
     DesignOptions options;
+    options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
     options.seed = 11;
     options.iterations = 6;
     options.threads = t + 1;
@@ -207,6 +212,7 @@ TEST(Design, InvalidStartingLayoutIsSeparatedOrReportedInvalid) {
                               0.0};
   ASSERT_FALSE(layout_violation(scene).empty());
   DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.iterations = 40;
   const auto r = design(scene, options);
   EXPECT_EQ(r.valid, layout_violation(r.layout).empty());
@@ -216,6 +222,7 @@ TEST(Design, StopFlagEndsTheRunAndKeepsTheBest) {
   const Scene scene = geometry::load_scene(kBedroom);
   std::atomic<bool> stop{false};
   DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
   options.iterations = 100;
   int calls = 0;
   const auto r = design(scene, options, &stop, [&](const DesignStep&) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The point of the paper's Fig. 1: a bedroom designed without the wheelchair
 // (path weights 0) leaves objects the chair cannot reach; designed with the
 // path costs (default weights) it can tour more of the M sequences. Each final
@@ -39,6 +40,7 @@ TEST(Fig1, PathCostsMakeMoreToursFeasibleThanInteriorCostsAlone) {
       geometry::Scene scene = bedroom;
       if (!with_path) scene.weights.path = {0.0, 0.0, 0.0};
       DesignOptions options;
+      options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
       options.seed = seed;
       options.iterations = iterations;
       const auto r = design(scene, options);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Designs with the proposed planner (paper §V, planning/reuse.h): with every
 // reuse technique off it is the baseline exactly; with all on, the same seed
 // gives the same layout and tours for 1 and 2 threads, every found tour is
@@ -28,8 +29,8 @@ DesignResult run(const geometry::Scene& s, bool proposed, const std::string& reu
   o.seed = 3;
   o.iterations = iterations;
   o.threads = threads;
-  o.proposed = proposed;
-  o.reuse = api::parse_reuse(reuse);
+  o.planner = hrs::optimize::PlannerConfig::from_preset(proposed ? "default" : "baseline");
+  if (proposed) o.planner.reuse = api::parse_reuse(reuse);
   return design(s, o);
 }
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Top-M sequences against brute-force enumeration, α against a hand-computed
 // example (paper §III-A, §III-D).
 #include "optimize/sequences.h"

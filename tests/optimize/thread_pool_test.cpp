@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tour thread pool: every item runs exactly once, on several threads,
 // and an item's exception reaches the caller.
 #include "optimize/thread_pool.h"

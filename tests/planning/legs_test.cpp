@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Leg planner over hundreds of random queries in every scene of scenes/
 // (slow). Every returned path starts and ends at the requested poses, is made
 // of RS segments of the scene's radius, its length is the sum of its segments,

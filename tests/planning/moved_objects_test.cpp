@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // moved_objects_clear (planning/moved_objects.h) against an independent
 // reference: footprints placed and measured in long double (a crossing test
 // for "inside", then the distance to every edge), over thousands of random

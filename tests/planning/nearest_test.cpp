@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The nearest-node index against a linear scan (insertions, removals,
 // heading wrap), the fixed-query order against the index, and the path
 // operations the planner builds trees with.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Infeasibility proofs (ReuseOptions::proofs, geometry::FreeGrid) against the
 // planner: a leg the RRT found is never proven impossible, and every pose of
 // its path lies in an unblocked cell, each cell a 26-neighbour of the last

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ReachGate (planning/reach_gate.h) against the planner: in random layouts
 // of the shipped scenes, a leg the baseline found (inside a tour, or alone
 // between random free poses) is never refused, and every waypoint of a found

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The proposed planner's reuse (paper §V, planning/reuse.h): every path it
 // hands out is valid in the current layout by the exact CGAL reference
 // (random move sequences), stored paths follow objects that moved rigidly,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Goal poses around objects, the RRT leg planner (unsolvable queries end
 // within the caps, empty rooms always solved, determinism and thread
 // independence) and impossible tours.
@@ -113,6 +114,30 @@ TEST(LegPlanner, UnsolvableQueriesReturnNotFoundWithinTheCaps) {
                 static_cast<unsigned long long>(r.stats.collision_checks), r.stats.time_ms);
   }
 }
+TEST(LegPlanner, GiveUpCheckIsAskedOnceEvenUnderASmallerCap) {
+  // The walled-off pocket: no motion exists, so the RRT never finds the goal.
+  const geometry::Scene scene = pocket_scene();
+  const geometry::CSpace cspace(scene);
+  const Pose2 from{1.5, 2.0, 0.0}, to{5.5, 2.0, 0.0};
+  LegPlanner planner(scene, cspace);
+  for (const int cap : {1, 20, 299, 300, 301, 600}) {
+    for (const bool answer : {false, true}) {
+      RrtTree tree;
+      int asked = 0;
+      const GiveUpCheck check{300, [&] {
+                                ++asked;
+                                return answer;
+                              }};
+      const LegResult r = planner.plan(from, to, 5, tree, cap, &check);
+      const std::string what = "cap " + std::to_string(cap) + (answer ? " yes" : " no");
+      EXPECT_FALSE(r.found) << what;
+      EXPECT_EQ(asked, 1) << what;  // once, whichever comes first
+      EXPECT_EQ(r.gave_up, answer) << what;
+      EXPECT_EQ(r.stats.iterations, answer ? std::min(cap, 300) : cap) << what;
+    }
+  }
+}
+
 TEST(LegPlanner, EveryLegInAnEmptyRoomIsFoundAndValid) {
   const geometry::Scene scene = base_scene({{0, 0}, {5, 0}, {5, 4}, {0, 4}});
   const geometry::CSpace cspace(scene);

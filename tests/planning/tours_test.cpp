@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tours (slow): in every scene, sequences drawn from the AO graph are toured
 // and every found tour is checked: legs join exactly, the first starts at the
 // door, every stop is one of the object's goal poses, faces the object's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Continuous checks of paths (free prefix, certified prefix), kept leg
 // measurements against fresh ones, and path shortcuts, each against the
 // exact reference.

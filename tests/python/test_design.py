@@ -43,6 +43,24 @@ def test_proposed_design_equals_the_command(tmp_path):
     compare_with_command(tmp_path, BEDROOM, seed=2, iterations=40, planner="proposed", threads=2)
 
 
+@pytest.mark.parametrize("planner", ["literal", "paper", "baseline,-escape", "default,-trees"])
+def test_every_preset_equals_the_command(tmp_path, planner):
+    result = compare_with_command(tmp_path, BEDROOM, seed=3, iterations=6, planner=planner,
+                                  threads=2)
+    assert result.report["planner"] == planner
+
+
+def test_docstring_and_help_list_the_same_presets_and_switches():
+    status, out, _ = run_cli("design", "--help")
+    assert status == 0
+    def listed(text):
+        return {line.split()[0] for line in text.splitlines() if line.startswith("    ")
+                and len(line) > 4 and line[4] != " "}
+    names = listed(out)
+    assert {"default", "baseline", "paper", "literal", "goalskip", "escape", "trees"} <= names
+    assert names == listed(hrspace.design.__doc__)
+
+
 def test_baseline_design_equals_the_command(tmp_path):
     compare_with_command(tmp_path, SOURCE_DIR / "scenes" / "small_bedroom.json", seed=1,
                          iterations=4, planner="baseline", threads=1)

@@ -104,3 +104,35 @@ def test_bad_pose_values_are_value_errors():
         s.object("bed").pose = (1.0, 2.0)
     with pytest.raises(ValueError):
         s.poses = np.zeros((2, 3))
+
+
+HOME_OFFICE = {
+    "format": "hrspace-scene/1",
+    "name": "home office",
+    "room": {"size": [5, 4]},
+    "door": {"center": [0, 2], "width": 0.9},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+        {"id": "desk", "size": [0.6, 1.2], "pose": [2.5, 0.3, -1.5708]},
+        {"id": "sink", "size": [0.6, 0.5], "pose": [4.0, 0.3, 1.5707963267948966], "fixed": True},
+    ],
+    "activity": {"transitions": {"door": {"desk": 0.5, "sink": 0.5},
+                                 "desk": {"sink": 1.0}, "sink": {"desk": 1.0}}},
+}
+
+
+def test_furniture_flush_with_a_wall_is_valid_and_past_it_is_not():
+    # The typed heading -1.5708 moves a corner of the desk 2 µm past y = 0:
+    # contact within the tolerance, as in `hrspace validate`.
+    s = hrspace.Scene(json.dumps(HOME_OFFICE))
+    assert s.object("desk").world_footprint[:, 1].min() < 0.0
+    s.validate()
+    s.object("desk").pose = (2.5, 0.29, -1.5708)
+    with pytest.raises(ValueError, match=r'/objects/0/pose: the footprint of "desk" sticks out '
+                                         r"0\.01 m past the wall from \(0,0\) to \(5,0\)"):
+        s.validate()
+
+
+def test_version_is_the_commands():
+    assert hrspace.__version__.count(".") == 2
+    assert all(part.isdigit() for part in hrspace.__version__.split("."))

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RS-decomposition (paper §V-A): kd-tree nearest neighbours against brute
 // force, deterministic construction, valid predicted paths, and the measured
 // prediction accuracy (printed; the paper's setting is a 3 m radius).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reeds–Shepp shortest paths against OMPL's ReedsSheppStateSpace (paper
 // §III-B): over 1e6 random pairs our length never exceeds OMPL's by more than
 // 1e-9 (1 + length); where ours is shorter, our path must reach the goal, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reeds–Shepp properties independent of OMPL (paper §III-B): the shortest
 // path reaches the goal, equals the minimum over the 48 words evaluated one
 // by one, and the distance is symmetric, at least Euclidean, invariant under

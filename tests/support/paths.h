@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared helpers of the planning suites: the scene files, random free poses,
 // and an independent check of a returned path (structure, ends, and collision

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Small scenes of the planning suites: boxes, an enclosed goal and a pocket
 // behind a neck narrower than the chair (queries no planner can solve).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Pose helpers every suite shares: random poses (in a box or a room), the
 // one pose error the suites compare against, and a goal tolerance.

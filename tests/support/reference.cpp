@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "tests/support/reference.h"
 
 #include <CGAL/Boolean_set_operations_2.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // An exact, independent collision reference for tests: the chair's footprint
 // rotated by an exact rational rotation (tan-half-angle, within ~1e-16 rad of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Scenes for geometry tests: an L-shaped room with a non-convex (U-shaped)
 // object, corridors for clearance, and the scene files in scenes/.

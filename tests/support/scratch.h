@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Scratch files and directories of a test: under the system's temporary
 // directory, named per process, so that two runs of the suites at once (the

@@ -1,0 +1,80 @@
+#pragma once
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The interior-design preferences of a scene (paper §III-D's interior terms)
+// as a designer reads them: each stated term met or not, at a tolerance
+// (docs/optimize.md "Preferences"), and the poses that would meet them.
+//
+// Terms counted (each once):
+//   - a movable object's wall distance and wall angle, separately, measured
+//     against the wall the cost counts as nearest (CostModel::nearest_wall);
+//   - a relation's distance and angle, separately, when at least one of its
+//     two objects is movable.
+// Tolerances (defaults): wall distance 5 cm, wall angle 3°, relation
+// distance max(10 cm, 10 % of the target), relation angle 5°.
+//
+// preferred_poses() proposes poses of one object that meet its own wall
+// preference (snapped to a wall at the wanted distance and heading) or a
+// relation's angle and distance to its partner: the design loop's
+// preference moves and its final polish (optimize/design.h) draw from them.
+
+#include <random>
+#include <string>
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "optimize/costs.h"
+
+namespace hrs::optimize {
+
+struct PreferenceTolerances {
+  double wall_distance = 0.05;                  //!< metres
+  double wall_angle = 3.0 * 3.14159265358979323846 / 180.0;      //!< radians
+  double relation_distance = 0.10;              //!< metres, at least
+  double relation_distance_share = 0.10;        //!< of the target, when larger
+  double relation_angle = 5.0 * 3.14159265358979323846 / 180.0;  //!< radians
+};
+
+//! One stated preference term on one layout.
+struct PreferenceCheck {
+  std::string kind;     //!< wall_distance, wall_angle, relation_distance, relation_angle
+  std::string object;   //!< the object (relation: a)
+  std::string other;    //!< relation: b; wall terms: "" (the wall is `wall`)
+  int wall = -1;        //!< wall terms: the room edge counted as nearest
+  double target = 0.0;  //!< metres or radians
+  double achieved = 0.0;
+  double residual = 0.0;  //!< |achieved − target|, angles wrapped to [0, π]
+  double tolerance = 0.0;
+  bool met = false;
+};
+
+struct PreferenceReport {
+  int met = 0;
+  int total = 0;
+  std::vector<PreferenceCheck> checks;
+  //! The largest residual of an angle term, radians (0 when none).
+  double worst_angle = 0.0;
+};
+
+//! Checks every counted preference of `scene` with the objects at `poses`.
+PreferenceReport check_preferences(const geometry::Scene& scene, const CostModel& model,
+                                   const std::vector<geometry::Pose2>& poses,
+                                   const PreferenceTolerances& tolerances = {});
+
+//! Poses of object `object` (movable) that meet one of its preferences,
+//! the others at `poses`: for each wall, the pose at the wanted distance and
+//! angle nearest the current position (when the object has a wall
+//! preference); for each relation with an angle, the current position turned
+//! to it; with a distance, moved along the line to the partner to it. Not
+//! checked for validity (the caller's exact predicates decide).
+std::vector<geometry::Pose2> preferred_poses(const geometry::Scene& scene, const CostModel& model,
+                                             const std::vector<geometry::Pose2>& poses,
+                                             int object);
+
+//! One pose of `object` against a wall drawn at random (when it has a wall
+//! preference; its heading and distance as wanted, its place along the wall
+//! uniform): a "wall slot" move. nullopt when the object has none.
+std::optional<geometry::Pose2> wall_slot(const geometry::Scene& scene, int object,
+                                         std::mt19937_64& rng);
+
+}  // namespace hrs::optimize
