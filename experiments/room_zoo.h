@@ -36,6 +36,11 @@
 
 namespace hrs::experiments::zoo {
 
+//! Version of the generator's output: bumped whenever the rooms that a
+//! (seed, index, options) give change, so that stored results of the
+//! `generalization` study name the rooms they were made in.
+inline constexpr int kGeneratorVersion = 1;
+
 enum class Shape { kRect, kL, kU, kFlat };
 
 //! "rect", "l", "u", "flat".

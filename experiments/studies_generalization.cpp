@@ -121,15 +121,27 @@ Table generalization_summary(const Table& runs) {
   return s;
 }
 
+//! The run's identity: its planner's, and in place of a scene file's digest
+//! the zoo room it designs in (generator version, zoo seed, bucket, index).
+Row generalization_identity(const RunSpec& spec, const StudyConfig& config) {
+  Row id = shared::planner_identity(config, param(spec, "planner"));
+  id.set("scene_digest", "zoo-v" + std::to_string(zoo::kGeneratorVersion) + ":" +
+                             param(spec, "zoo_seed") + ":" + param(spec, "bucket") + ":" +
+                             param(spec, "index"));
+  return id;
+}
+
 }  // namespace
 
 Study shared::generalization_study() {
-  return {"generalization",
+  Study s{"generalization",
           "beyond the paper: random rooms of the room zoo",
           "baseline vs proposed designs in zoo rooms of 4-40 objects, tourable by construction",
           generalization_runs,
           generalization_run,
           generalization_summary};
+  s.identity = generalization_identity;
+  return s;
 }
 
 }  // namespace hrs::experiments
