@@ -43,6 +43,7 @@ std::string usage_text() {
   std::string s =
       "hrspace experiment STUDY|all --out DIR [--seeds N] [--iterations N] [--threads T]\n"
       "                   [--jobs J] [--shard i/n] [--quick] [--rooms LIST] [--scenes DIR]\n"
+      "                   [--zoo-seed S] [--zoo-rooms N]\n"
       "hrspace experiment merge STUDY|all --out DIR SHARD_DIR...\n"
       "hrspace experiment list\n\n"
       "Runs a study of the paper's experiments (§VI) and writes DIR/STUDY/runs.csv (one row\n"
@@ -65,7 +66,9 @@ std::string usage_text() {
       "  --quick         the smallest sweep that writes every output (tests, smoke runs)\n"
       "  --rooms LIST    rooms instead of the study's own: scene names or .json paths, of\n"
       "                  distinct file names (runs are keyed by them)\n"
-      "  --scenes DIR    where scene names are looked up (default: the source's scenes/)\n\n"
+      "  --scenes DIR    where scene names are looked up (default: the source's scenes/)\n"
+      "  --zoo-seed S    generalization: seed of the room zoo (default 1)\n"
+      "  --zoo-rooms N   generalization: rooms per object-count bucket (default 5)\n\n"
       "studies:\n";
   for (const auto& st : experiments::studies()) {
     std::string n = st.name;
@@ -118,6 +121,8 @@ experiments::StudyConfig study_config(const Args& args) {
       static_cast<int>(args.integer("iterations", config.quick ? 100 : 700, 1, 10000000));
   config.threads = static_cast<int>(args.integer("threads", 1, 0, 1024));
   config.out = *out;
+  config.zoo_seed = static_cast<std::uint64_t>(args.integer("zoo-seed", 1, 0, 1000000000000L));
+  config.zoo_rooms = static_cast<int>(args.integer("zoo-rooms", 5, 1, 1000));
 #ifdef HRSPACE_SOURCE_DIR
   config.scenes_dir = std::filesystem::path(HRSPACE_SOURCE_DIR) / "scenes";
 #endif
@@ -251,7 +256,8 @@ int run_command(const Args& args, const experiments::StudyConfig& config) {
 
 int cmd_experiment(const Argv& argv) {
   const Args args(argv,
-                  {"out", "seeds", "iterations", "threads", "jobs", "shard", "rooms", "scenes"},
+                  {"out", "seeds", "iterations", "threads", "jobs", "shard", "rooms", "scenes",
+                   "zoo-seed", "zoo-rooms"},
                   {"quick"});
   if (args.help()) {
     std::cout << "usage: " << usage_text();

@@ -18,5 +18,6 @@ int cmd_plan(const Argv& args);      //!< cli/cmd_planning.cpp
 int cmd_tour(const Argv& args);      //!< cli/cmd_planning.cpp
 int cmd_design(const Argv& args);    //!< cli/cmd_optimize.cpp
 int cmd_experiment(const Argv& args);  //!< cli/cmd_experiment.cpp
+int cmd_generate(const Argv& args);    //!< cli/cmd_generate.cpp
 
 }  // namespace hrs::cli

@@ -31,6 +31,7 @@ constexpr Command kCommands[] = {
     {"design", "optimize a room layout (layout, tours, SVG, report)", hrs::cli::cmd_design},
     {"experiment", "run a study of the paper's experiments (CSV tables)",
      hrs::cli::cmd_experiment},
+    {"generate", "random rooms tourable by construction (the room zoo)", hrs::cli::cmd_generate},
 };
 
 void usage(std::ostream& out) {

@@ -24,7 +24,7 @@ const std::vector<Study>& studies() {
         shared::rrt_iterations_study(), shared::small_room_study(),
         shared::ao_graph_study(),       shared::designs_study(),
         shared::hard_rooms_study(),     shared::design_loop_study(),
-        shared::method_study(),
+        shared::method_study(),         shared::generalization_study(),
     };
     // A run's identity (runner.h run_identity): its room's scene digest and
     // its planner's switches, unless the study reads more than that.

@@ -76,5 +76,7 @@ Study hard_rooms_study();
 Study design_loop_study();
 // studies_method.cpp: the method figures.
 Study method_study();
+// studies_generalization.cpp: designs in rooms of the room zoo.
+Study generalization_study();
 
 }  // namespace hrs::experiments::shared

@@ -15,6 +15,7 @@
 //   DIR/recordings/             baseline layout sequences for replays
 
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -34,6 +35,8 @@ struct StudyConfig {
   std::vector<std::string> rooms;    //!< overrides the study's rooms (names or .json paths)
   std::filesystem::path scenes_dir;  //!< where room names are looked up
   std::filesystem::path out;         //!< root output directory
+  std::uint64_t zoo_seed = 1;        //!< generalization: seed of the room zoo
+  int zoo_rooms = 5;                 //!< generalization: rooms per object-count bucket
 };
 
 //! The scene file of a room: a .json path as given, else

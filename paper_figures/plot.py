@@ -241,6 +241,43 @@ def fig_small_room(root, figs):
     return out
 
 
+def fig_generalization(root, figs):
+    """Zoo rooms: success share and design time against the object count."""
+    runs = read_csv(os.path.join(root, "generalization", "runs.csv"))
+    if not runs:
+        return []
+    buckets = []
+    for r in runs:
+        if r["bucket"] not in buckets:
+            buckets.append(r["bucket"])
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(9, 3.6))
+    for planner in ["baseline", "all"]:
+        rows = by(runs, planner=planner)
+        if not rows:
+            continue
+        label = PLANNER_LABELS.get(planner, planner)
+        xs, ys = [], []
+        for b in buckets:
+            rb = by(rows, bucket=b)
+            if rb:
+                xs.append(mean_sd([num(r, "objects") for r in rb])[0])
+                ys.append(100 * mean_sd([num(r, "success") for r in rb])[0])
+        ax1.plot(xs, ys, marker="o", label=label)
+        ax2.scatter([num(r, "objects") for r in rows], [num(r, "total_s") for r in rows],
+                    s=14, label=label)
+    ax1.set_xlabel("objects in the room (bucket mean)")
+    ax1.set_ylabel("designs with >= 90 % of tours found (%)")
+    ax1.set_ylim(-5, 105)
+    ax1.legend(fontsize=8)
+    ax2.set_xlabel("objects in the room")
+    ax2.set_ylabel("design time (s)")
+    ax2.set_yscale("log")
+    ax2.legend(fontsize=8)
+    fig.suptitle("Room zoo: rooms tourable by construction")
+    fig.tight_layout()
+    return save(fig, figs, "generalization")
+
+
 def fig_ao_graph(root, figs):
     dirs = design_dirs(root, "ao_graph")
     out = []
@@ -582,7 +619,7 @@ def main():
     figs = os.path.join(a.out, "figures")
     written = []
     for f in (fig_timing, fig_rs_decomposition, fig_rrt_iterations, fig_small_room, fig_ao_graph,
-              fig_designs, fig_method):
+              fig_designs, fig_method, fig_generalization):
         written += f(a.out, figs)
     rep = os.path.join(a.out, "REPRODUCTION.md")
     rows = write_reproduction(a.out, rep, a.command)

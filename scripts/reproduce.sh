@@ -29,6 +29,7 @@ other options, scenes or code is refused (exit 2), never mixed in.
   --publish    also copy the figures, summaries and REPRODUCTION.md into
                paper_figures/ (what README and docs embed)
   STUDY ...    timing rs_decomposition rrt_iterations small_room ao_graph designs method
+               hard_rooms design_loop generalization
 
 Environment: HRSPACE_BIN uses that hrspace binary instead of building one.
 USAGE

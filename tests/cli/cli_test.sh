@@ -183,6 +183,25 @@ for p in default baseline paper literal goalskip refuse escape early samples ste
   grep -q "^    $p " "$tmp/help" || { echo "FAIL: design --help lacks $p"; fails=$((fails+1)); }
 done
 # StdoutWriteErrorsAreExitOne: every subcommand checks its output.
+# generate: rooms and witnesses that pass validate, the same for a seed and
+# any --threads, one-line errors naming the option for bad values
+check "generate" 0 "$bin" generate --out "$tmp/zoo" --seed 4 --count 3 --objects 4-9 --threads 1
+[ "$(wc -l <"$tmp/out")" = 3 ] || { echo "FAIL generate: expected one line per room"; fails=$((fails+1)); }
+grep -q "^zoo_4_1 .*tours 10/10" "$tmp/out" || { echo "FAIL generate: no line for zoo_4_1 with 10/10 tours"; fails=$((fails+1)); }
+for f in "$tmp"/zoo/zoo_4_{1,2,3}.json "$tmp"/zoo/zoo_4_{1,2,3}.witness.json; do
+  check "validate generated $(basename "$f")" 0 "$bin" validate "$f"
+done
+check "generate again, two threads" 0 "$bin" generate --out "$tmp/zoo2" --seed 4 --count 3 --objects 4-9 --threads 2
+diff -r "$tmp/zoo" "$tmp/zoo2" >/dev/null || { echo "FAIL generate: same seed, other files"; fails=$((fails+1)); }
+check "generate help" 0 "$bin" generate --help
+for bad in "--objects 3-9" "--objects 9-5" "--objects x" "--objects 4-101" "--shape oval" "--count 0" "--seed -1"; do
+  # shellcheck disable=SC2086
+  check "generate $bad" 2 "$bin" generate --out "$tmp/zoo3" $bad
+  expect_err "generate $bad names the option" "${bad%% *}"
+done
+check "generate without --out" 2 "$bin" generate
+expect_err "generate without --out message" "--out"
+
 if [ -w /dev/full ]; then
   for cmd in "validate $bed" "collide $bed --poses $tmp/poses.csv" "rs --radius 0.7 --pairs $tmp/pairs.csv" \
              "plan $bed --from 0.9,1.2,0 --to 2.0,1.2,0" "tour $bed --sequence door,tv" "--help" "validate --help"; do

@@ -17,7 +17,8 @@ fi
 /usr/bin/python3 - "$tmp/q" <<'PY' || fails=$((fails + 1))
 import csv, os, sys
 root = sys.argv[1]
-studies = ["timing", "rs_decomposition", "rrt_iterations", "small_room", "ao_graph", "designs", "method"]
+studies = ["timing", "rs_decomposition", "rrt_iterations", "small_room", "ao_graph", "designs", "method",
+           "generalization"]
 bad = []
 for s in studies:
     for f in ("runs.csv", "summary.csv"):
@@ -35,7 +36,7 @@ for s in studies:
                         bad.append(f"{p}: row {r.get('key')} lacks {col}")
 figures = ["timing", "rs_partition", "rs_decomposition_time", "rrt_iterations", "rrt_threshold",
            "small_room_time", "small_room_designs", "ao_graph_designs", "designs_cover",
-           "fig1_weights", "ao_graphs", "goal_poses"]
+           "fig1_weights", "ao_graphs", "goal_poses", "generalization"]
 for name in figures:
     for ext, magic in (("png", b"\x89PNG\r\n\x1a\n"), ("svg", b"<svg")):
         p = os.path.join(root, "figures", f"{name}.{ext}")

@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The generalization study (beyond the paper): designs in rooms of the room
+// zoo (experiments/room_zoo.h), random rooms of 4 to 40 objects that are
+// tourable by construction, by the proposed planner ("all") and the
+// baseline. docs/experiments.md says what it measures.
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "experiments/room_zoo.h"
+#include "experiments/stats.h"
+#include "experiments/studies_shared.h"
+#include "geometry/error.h"
+#include "geometry/scene.h"
+
+namespace hrs::experiments {
+namespace {
+
+using shared::design_options;
+using shared::design_output;
+using shared::int_param;
+using shared::make_run;
+using shared::param;
+
+//! Object-count buckets of the study.
+struct Bucket {
+  int lo, hi;
+};
+constexpr Bucket kBuckets[] = {{4, 8}, {9, 16}, {17, 24}, {25, 40}};
+
+std::string bucket_name(const Bucket& b) { return std::to_string(b.lo) + "-" + std::to_string(b.hi); }
+
+std::vector<RunSpec> generalization_runs(const StudyConfig& c) {
+  std::vector<RunSpec> runs;
+  const int buckets = c.quick ? 2 : 4;
+  const int rooms = c.quick ? 2 : c.zoo_rooms;
+  const int seeds = std::min(c.seeds, c.quick ? 1 : 2);
+  for (int b = 0; b < buckets; ++b)
+    for (int r = 1; r <= rooms; ++r)
+      for (int seed = 1; seed <= seeds; ++seed)
+        for (const char* planner : {"baseline", "all"})
+          runs.push_back(make_run("generalization",
+                                  {{"bucket", bucket_name(kBuckets[b])},
+                                   {"zoo_seed", std::to_string(c.zoo_seed)},
+                                   {"index", std::to_string(100 * (b + 1) + r)},
+                                   {"seed", std::to_string(seed)},
+                                   {"planner", planner}}));
+  return runs;
+}
+
+//! The zoo room of a run and its witness: read from DIR/generalization/rooms/
+//! when an earlier run generated them, else generated (with the tour check)
+//! and stored there. Generation is deterministic, so runs that race to store
+//! the same room write the same bytes.
+std::pair<geometry::Scene, geometry::Scene> zoo_room(const RunSpec& spec, const RunContext& context) {
+  zoo::ZooOptions o;
+  o.seed = static_cast<std::uint64_t>(int_param(spec, "zoo_seed"));
+  const std::string bucket = param(spec, "bucket");
+  for (const Bucket& b : kBuckets)
+    if (bucket_name(b) == bucket) o.min_objects = b.lo, o.max_objects = b.hi;
+  o.threads = context.config.threads;
+  const int index = static_cast<int>(int_param(spec, "index"));
+  const std::string name = "zoo_" + std::to_string(o.seed) + "_" + std::to_string(index);
+  const std::filesystem::path dir = context.study_dir / "rooms";
+  const std::filesystem::path scene = dir / (name + ".json"), witness = dir / (name + ".witness.json");
+  if (std::filesystem::is_regular_file(scene) && std::filesystem::is_regular_file(witness))
+    return {geometry::load_scene(scene.string()), geometry::load_scene(witness.string())};
+  const zoo::ZooRoom room = zoo::generate_room(o, index);
+  if (room.scene.objects.empty()) throw InputError(name + ": no plant fitted");
+  std::filesystem::create_directories(dir);
+  write_text_atomic(scene, geometry::write_scene(room.scene));
+  write_text_atomic(witness, geometry::write_scene(room.witness));
+  return {room.scene, room.witness};
+}
+
+RunOutput generalization_run(const RunSpec& spec, RunContext& context) {
+  const auto [scene, witness] = zoo_room(spec, context);
+  const std::string planner = param(spec, "planner");
+  optimize::DesignOptions o =
+      design_options(context.config, planner, static_cast<std::uint64_t>(int_param(spec, "seed")));
+  const optimize::DesignResult r = optimize::design(scene, o, context.stop);
+  RunOutput out = design_output(r);
+  if (out.stopped) return out;
+  // The witness under the same objective and planner: its layout as is
+  // (0 iterations), so its cost is the initial one.
+  optimize::DesignOptions w = o;
+  w.iterations = 0;
+  const optimize::DesignResult wr = optimize::design(witness, w, context.stop);
+  if (context.stop && context.stop->load()) {
+    out.stopped = true;
+    return out;
+  }
+  Row& m = out.measures;
+  m.set("objects", static_cast<long>(scene.objects.size()));
+  m.set("area_m2", geometry::signed_area(scene.room.polygon));
+  m.set("success", r.final.tours_found * 10 >= 9 * r.final.tours_total ? 1L : 0L);
+  m.set("cost_witness", wr.initial.total());
+  m.set("witness_tours_found", wr.initial.tours_found);
+  m.set("cost_vs_witness", wr.initial.total() > 0 ? r.final.total() / wr.initial.total() : 0.0);
+  return out;
+}
+
+Table generalization_summary(const Table& runs) {
+  const std::vector<std::string> group = {"bucket", "planner"};
+  Table s = summarize_table(runs, group,
+                            {"objects", "area_m2", "success", "tours_found", "tours_total",
+                             "cost_final", "cost_witness", "cost_vs_witness", "total_s",
+                             "planning_s"});
+  // The slowest run of each group.
+  for (Row& row : s) {
+    double worst = 0.0;
+    for (const Row& run : runs) {
+      if (run.get("bucket") != row.get("bucket") || run.get("planner") != row.get("planner"))
+        continue;
+      worst = std::max(worst, run.number("total_s").value_or(0.0));
+    }
+    row.set("total_s_max", worst);
+  }
+  add_ratio(s, "planner", "baseline", {"bucket"}, "total_s");
+  return s;
+}
+
+//! The run's identity: its planner's, and in place of a scene file's digest
+//! the zoo room it designs in (generator version, zoo seed, bucket, index).
+Row generalization_identity(const RunSpec& spec, const StudyConfig& config) {
+  Row id = shared::planner_identity(config, param(spec, "planner"));
+  id.set("scene_digest", "zoo-v" + std::to_string(zoo::kGeneratorVersion) + ":" +
+                             param(spec, "zoo_seed") + ":" + param(spec, "bucket") + ":" +
+                             param(spec, "index"));
+  return id;
+}
+
+}  // namespace
+
+Study shared::generalization_study() {
+  Study s{"generalization",
+          "beyond the paper: random rooms of the room zoo",
+          "baseline vs proposed designs in zoo rooms of 4-40 objects, tourable by construction",
+          generalization_runs,
+          generalization_run,
+          generalization_summary};
+  s.identity = generalization_identity;
+  return s;
+}
+
+}  // namespace hrs::experiments
