@@ -176,7 +176,7 @@ TEST(SceneRules, RelationNeedsTwoDifferentObjects) {
 }
 TEST(SceneRules, RelationNeedsDistanceOrAngle) {
   expect_broken([](Json& j) { erase(j, "/relations/0", "distance"); }, "/relations/0/distance",
-                "distance and/or angle");
+                "distance, angle and/or faces");
 }
 TEST(SceneRules, RelationWeightMustBeNonNegative) {
   expect_broken([](Json& j) { set(j, "/relations/0/weight", -1); }, "/relations/0/weight", ">= 0");
@@ -300,6 +300,11 @@ TEST(SceneRules, WeightsMustBeNonNegativeNumbers) {
   expect_broken([](Json& j) { set(j, "/weights/path/2", -0.5); }, "/weights/path/2", ">= 0");
   expect_broken([](Json& j) { set(j, "/weights/interior/0", true); }, "/weights/interior/0",
                 "number");
+}
+
+TEST(SceneRules, RelationFacesMustBeABoolean) {
+  expect_broken([](Json& j) { set(j, "/relations/0/faces", 1); }, "/relations/0/faces",
+                "true or false");
 }
 
 }  // namespace
