@@ -36,7 +36,7 @@ int cmd_plan(const Argv& argv) {
   const Args args(argv, {"from", "to", "seed", "iterations", "step", "planner", "reuse"});
   const std::string usage =
       "hrspace plan SCENE --from x,y,theta --to x,y,theta [--seed N] [--iterations N] [--step M]\n"
-      "                   [--planner baseline|proposed] [--reuse samples,steering]";
+      "                   [--planner baseline|default] [--reuse samples,steering]";
   if (args.help()) {
     std::cout << "usage: " << usage
               << "\n\nPlans one leg of the wheelchair in the scene's initial layout with the\n"
@@ -47,7 +47,7 @@ int cmd_plan(const Argv& argv) {
                  "certified by a grid over the free poses; false: found, or not proven).\n"
                  "--seed (default 1) makes the run reproducible; --iterations caps\n"
                  "the RRT (default 3000); --step is the tree's step length (default 0.25 m).\n"
-                 "--planner proposed draws the RRT's samples from the RS-decomposition and\n"
+                 "--planner default (or proposed) draws the RRT's samples from the RS-decomposition and\n"
                  "steers through its predicted words (paper V-A; --reuse samples or steering\n"
                  "for one of them); the decomposition is built first, from --seed.\n"
                  "Exit 0 whether or not a path is found; 2 for a bad scene, or a start or\n"
@@ -71,16 +71,17 @@ int cmd_plan(const Argv& argv) {
 int cmd_tour(const Argv& argv) {
   const Args args(argv, {"sequence", "seed", "planner", "reuse"});
   const std::string usage =
-      "hrspace tour SCENE --sequence door,ID,ID,... [--seed N] [--planner baseline|proposed]\n"
+      "hrspace tour SCENE --sequence door,ID,ID,... [--seed N] [--planner baseline|default]\n"
       "                   [--reuse LIST]";
   if (args.help()) {
     std::cout << "usage: " << usage
               << "\n\nPlans one tour in the scene's initial layout (paper III-C): from the door's\n"
                  "start pose to a goal pose around each object in order (poses face the\n"
-                 "object's centre, on its allowed approach sides), legs by the baseline RRT,\n"
+                 "object's centre, on its allowed approach sides), legs by the RRT (default\n"
+                 "--planner baseline),\n"
                  "branch and bound over the goal poses. Prints one entry of tours.json:\n"
                  "sequence, found, legs (from, to, segments, waypoints every 5 cm), metrics\n"
-                 "(length, rotation, clearance), stats. --planner proposed serves the legs\n"
+                 "(length, rotation, clearance), stats. --planner default (or proposed) serves the legs\n"
                  "through the proposed planner (paper V: decomposition samples and steering,\n"
                  "legs shared within the tour; --reuse to choose among samples, steering,\n"
                  "paths, shortcuts, budget and proofs).\n"

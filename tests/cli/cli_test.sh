@@ -169,6 +169,9 @@ expect_out "validate sealed L-studio" "tours      0/10 found in the input layout
 expect_out "validate unmet preference" "           wall_angle sofa: off by 90 deg (tolerance 3)"
 check "validate quiet" 0 "$bin" validate "$src/scenes/l_studio.json" --quiet
 if grep -q "^tours" "$tmp/out"; then echo "FAIL: --quiet printed the outlook"; fails=$((fails+1)); fi
+# The README's study count is the code's.
+studies=$("$bin" experiment list | wc -l)
+grep -q "^$studies studies (\`hrspace experiment list\`" "$src/README.md" || { echo "FAIL: README does not say $studies studies"; fails=$((fails+1)); }
 # design --planner: presets and items, refused before any work with one line.
 check "design unknown preset" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner fast
 expect_err "design unknown preset named" "--planner: unknown planner preset 'fast' (default, baseline, paper, literal)"
