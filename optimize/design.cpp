@@ -15,6 +15,7 @@
 #include "geometry/error.h"
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "optimize/escape.h"
 #include "optimize/polish.h"
 #include "optimize/tour_round.h"
 #include "planning/motion_validator.h"
@@ -65,19 +66,17 @@ std::string layout_violation(const geometry::Scene& scene) {
 
 namespace {
 
-//! Smallest vertex-to-edge distance between two polygons, either way (0
-//! when an edge of one crosses the other is not detected; an upper bound
-//! of the gap, enough to tell "near").
-double footprint_gap(const geometry::Polygon& a, const geometry::Polygon& b) {
-  double d = std::numeric_limits<double>::infinity();
-  for (int pass = 0; pass < 2; ++pass) {
-    const geometry::Polygon& p = pass == 0 ? a : b;
-    const geometry::Polygon& q = pass == 0 ? b : a;
-    for (const geometry::Vec2& v : p)
-      for (std::size_t e = 0; e < q.size(); ++e)
-        d = std::min(d, geometry::point_segment_distance(v, q[e], q[(e + 1) % q.size()]));
-  }
-  return d;
+std::vector<bool> movable_of(const geometry::Scene& scene) {
+  std::vector<bool> out;
+  for (const auto& o : scene.objects) out.push_back(!o.fixed);
+  return out;
+}
+
+//! With all path weights 0 the cost does not depend on the tours: plan only
+//! the initial and the best layout (Fig. 1's "designed without the chair").
+bool plans_every_iteration(const geometry::Scene& scene) {
+  const auto& wp = scene.weights.path;
+  return wp[0] != 0.0 || wp[1] != 0.0 || wp[2] != 0.0;
 }
 
 //! One design run (paper §III-E with the tours of §III-C): the annealer's
@@ -96,20 +95,16 @@ class DesignRun {
         round_(scene, options, sequences_, stop),
         work_(round_.work()),
         cspace_(round_.cspace()),
-        tours_(round_.tours()) {
+        tours_(round_.tours()),
+        movable_(movable_of(scene)),
+        plan_every_iteration_(plans_every_iteration(scene)),
+        escape_(scene, round_, sequences_, movable_, options.planner.escape,
+                plan_every_iteration_) {
     result_.sequences = sequences_;
     result_.threads = round_.threads();
-    for (const auto& o : scene.objects) {
-      poses_.push_back(o.pose);
-      movable_.push_back(!o.fixed);
-    }
+    for (const auto& o : scene.objects) poses_.push_back(o.pose);
     poses_initial_ = poses_;
     model_.set_bounded_preferences(options.planner.prefer);
-    // With all path weights 0 the cost does not depend on the tours: plan
-    // only the initial and the best layout (Fig. 1's "designed without the
-    // chair").
-    const auto& wp = scene.weights.path;
-    plan_every_iteration_ = wp[0] != 0.0 || wp[1] != 0.0 || wp[2] != 0.0;
     result_.planned_every_iteration = plan_every_iteration_;
   }
 
@@ -119,12 +114,15 @@ class DesignRun {
     plan_current();
     current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
     result_.initial = current_terms_;
-    refresh_open_stops();
-    if (unblock()) {
+    escape_.refresh_open_stops();
+    if (escape_.unblock(
+            poses_, options_.seed, stop_,
+            [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); },
+            [this](int o, const Pose2& to) { place(o, to); }, result_.unblock)) {
       plan_current();  // the annealing starts from the unblocked layout
       current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
     }
-    focus_current_ = walling_objects();
+    focus_current_ = escape_.walling_objects();
     current_tours_ = tours_;
     const AnnealOptions schedule = make_schedule();
     std::mt19937_64 rng(options_.seed);
@@ -203,49 +201,7 @@ class DesignRun {
     work_.objects[moved].pose = p[moved];
     const bool ok = object_violation(work_, moved).empty();
     work_.objects[moved].pose = old;
-    return ok && !covers_a_stop(p[moved], moved);
-  }
-
-  //! With `escape`: true when moving object `moved` to `to` leaves a stop
-  //! that has a free goal pose now without any (docs/optimize.md "Blocked
-  //! layouts"). Such a layout has no tour through that stop whatever the
-  //! planner does, and once the annealer accepts one (while hot) the move
-  //! back is seldom drawn. Only the stops within reach of the object's new
-  //! footprint are asked, with the object moved in the C-space and back.
-  bool covers_a_stop(const Pose2& to, int moved) {
-    if (!options_.planner.escape || !plan_every_iteration_ || open_stops_.empty()) return false;
-    geometry::Object o = work_.objects[moved];
-    o.pose = to;
-    const geometry::Polygon fp = geometry::world_footprint(o);
-    const Pose2 from = cspace_.object_pose(moved);
-    bool moved_in_cspace = false;
-    bool covers = false;
-    for (int s : open_stops_) {
-      // A goal pose's chair lies within gap + its diagonal of the stop.
-      const double reach = work_.objects[s].approach_or_default().gap + 0.01 +
-                           std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
-      if (s != moved && footprint_gap(geometry::world_footprint(work_.objects[s]), fp) > reach)
-        continue;
-      if (!moved_in_cspace) {
-        cspace_.move_object(moved, to);
-        moved_in_cspace = true;
-      }
-      if (round_.goals_of(s).empty()) {
-        covers = true;
-        break;
-      }
-    }
-    if (moved_in_cspace) cspace_.move_object(moved, from);
-    if (covers) ++result_.covering_moves;
-    return covers;
-  }
-
-  //! The stops with a free goal pose in the current layout (covers_a_stop).
-  void refresh_open_stops() {
-    open_stops_.clear();
-    if (!options_.planner.escape || !plan_every_iteration_) return;
-    for (int s : stop_objects())
-      if (!round_.goals_of(s).empty()) open_stops_.push_back(s);
+    return ok && !escape_.covers_a_stop(p[moved], moved);
   }
 
   //! Applies a proposal to the C-space, tours it and returns its cost, or
@@ -317,165 +273,12 @@ class DesignRun {
     return floors;
   }
 
-  //! Beyond the paper (docs/optimize.md "Blocked layouts"): when stops are
-  //! walled off from the door in the input layout, a greedy search on the
-  //! free grid alone (no tour is planned, a few milliseconds a proposal)
-  //! moves the objects that wall them in (focus_for) until no stop of any
-  //! sequence is walled off, or after kUnblockProposals proposals. A
-  //! proposal (jump with a quarter turn, step, or quarter turn, each redrawn
-  //! until valid) is kept when the summed grade of the stops does not grow.
-  //! Returns true when the layout changed; the annealing starts from it.
-  bool unblock() {
-    static constexpr int kUnblockProposals = 300;
-    if (!options_.planner.escape || !plan_every_iteration_) return false;
-    const std::vector<int> stops = stop_objects();
-    double score = 0.0;
-    std::vector<int> walled = walled_off(stops, score);
-    result_.unblock.walled_before = static_cast<int>(walled.size());
-    result_.unblock.walled_after = result_.unblock.walled_before;
-    if (walled.empty()) return false;
-    std::mt19937_64 rng(splitmix64(options_.seed ^ 0x756e'626c'6f63'6bULL));
-    const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
-    bool changed = false;
-    for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
-      if (stop_ && stop_->load()) break;
-      const std::vector<int> focus = focus_for(walled, true);
-      if (focus.empty()) break;
-      const int o = focus[uniform_index(rng, focus.size())];
-      const std::optional<Pose2> to = unblock_move(o, box, rng);
-      ++result_.unblock.proposals;
-      if (!to) continue;
-      const Pose2 from = work_.objects[o].pose;
-      place(o, *to);
-      double next = 0.0;
-      std::vector<int> now = walled_off(stops, next);
-      if (next <= score) {
-        score = next;
-        walled = std::move(now);
-        poses_[o] = *to;
-        changed = true;
-        ++result_.unblock.accepted;
-        refresh_open_stops();
-      } else {
-        place(o, from);
-      }
-    }
-    result_.unblock.walled_after = static_cast<int>(walled.size());
-    return changed;
-  }
-
-  //! The objects that are stops of some sequence, ascending.
-  std::vector<int> stop_objects() const {
-    std::vector<int> stops;
-    for (const Sequence& s : sequences_)
-      for (std::size_t i = 1; i < s.nodes.size(); ++i) {
-        const int o = work_.find_object(s.nodes[i]);
-        if (o >= 0 && std::find(stops.begin(), stops.end(), o) == stops.end()) stops.push_back(o);
-      }
-    std::sort(stops.begin(), stops.end());
-    return stops;
-  }
-
-  //! The stops the door's reachable region misses (grade > 0); `total` is
-  //! the summed grade of all `stops`.
-  std::vector<int> walled_off(const std::vector<int>& stops, double& total) {
-    std::vector<int> walled;
-    total = 0.0;
-    for (int s : stops) {
-      const double b = round_.gate().blockage(round_.goals_of(s));
-      total += b;
-      if (b > 0.0) walled.push_back(s);
-    }
-    return walled;
-  }
-
-  //! One unblocking proposal for object `o`: a jump anywhere in the room's
-  //! `box` with a quarter turn (1/2), a step of up to 1 m per axis (1/4) or a
-  //! quarter turn (1/4), redrawn up to 50 times until valid; nullopt when
-  //! no draw was.
-  std::optional<Pose2> unblock_move(int o, const geometry::Box& box, std::mt19937_64& rng) {
-    constexpr double kQuarter = std::numbers::pi / 2;
-    const Pose2 from = work_.objects[o].pose;
-    const double kind = uniform01(rng);
-    for (int attempt = 0; attempt < 50; ++attempt) {
-      Pose2 to = from;
-      if (kind < 0.5) {
-        to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
-        to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
-        to.theta = geometry::wrap_angle(from.theta + std::floor(uniform01(rng) * 4.0) * kQuarter);
-      } else if (kind < 0.75) {
-        to.x += 2.0 * uniform01(rng) - 1.0;
-        to.y += 2.0 * uniform01(rng) - 1.0;
-      } else {
-        to.theta = geometry::wrap_angle(from.theta + (uniform01(rng) < 0.5 ? 1 : -1) * kQuarter);
-      }
-      std::vector<Pose2> p = poses_;
-      p[o] = to;
-      if (move_valid(p, o)) return to;
-    }
-    return std::nullopt;
-  }
-
   //! Moves object `o` to `to` in the working scene, the C-space and the
   //! round's grid.
   void place(int o, const Pose2& to) {
     work_.objects[o].pose = to;
     cspace_.move_object(o, to);
     round_.layout_changed();
-  }
-
-  //! The annealer's focus, with `escape`, when tours are unfound: the
-  //! objects that most likely stand between the door and the stops it
-  //! misses. When stops are walled off in the free grid (grade > 0): the
-  //! movable objects that border the door's reachable region (within the
-  //! chair's half length + 25 cm) and are such a stop or lie within
-  //! kFocusReach of one of their goal poses, and, for a stop with no free
-  //! goal pose at all, the stop and the movable objects within kFocusReach
-  //! of it wherever they are. Otherwise (the grid joins
-  //! everything, the car still fails: a turn too tight, a gap the grid's
-  //! margin lets through): the movable stops where unfound tours broke off
-  //! and the movable objects within kFocusReach of their goal poses.
-  std::vector<int> walling_objects() {
-    if (!options_.planner.escape) return {};
-    const std::vector<int> walled = round_.walled_stops();
-    if (walled.empty()) return focus_for(round_.failing_stops(), false);
-    std::vector<int> out = focus_for(walled, true);
-    // A stop without a single free goal pose is covered where it stands,
-    // however far the door's region reaches: it and its neighbours join
-    // (measured: a bookshelf facing the bed, otherwise never moved).
-    std::vector<int> covered;
-    for (int s : walled)
-      if (round_.goals_of(s).empty()) covered.push_back(s);
-    for (int i : focus_for(covered, false))
-      if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
-    std::sort(out.begin(), out.end());
-    return out;
-  }
-
-  //! The movable objects near `stops` (see walling_objects()); `in_grid`:
-  //! only those bordering the door's reachable region.
-  std::vector<int> focus_for(const std::vector<int>& stops, bool in_grid) {
-    static constexpr double kFocusReach = 2.0;  // metres
-    std::vector<int> out;
-    if (stops.empty()) return out;
-    // The stops' footprints: a stop whose goal poses are all covered (by
-    // what walls it in) has no free goal pose to measure from.
-    std::vector<geometry::Polygon> targets;
-    for (int s : stops) targets.push_back(geometry::world_footprint(work_.objects[s]));
-    std::vector<int> candidates;
-    if (in_grid) {
-      candidates = round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25);
-    } else {
-      for (int i = 0; i < static_cast<int>(movable_.size()); ++i) candidates.push_back(i);
-    }
-    for (int i : candidates) {
-      if (!movable_[i]) continue;
-      bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
-      const geometry::Polygon fp = geometry::world_footprint(work_.objects[i]);
-      for (const geometry::Polygon& t : targets) near = near || footprint_gap(fp, t) <= kFocusReach;
-      if (near) out.push_back(i);
-    }
-    return out;
   }
 
   //! Counts an early rejection that left tours `first`… unplanned.
@@ -520,8 +323,8 @@ class DesignRun {
       current_tours_ = tours_;
       // Right after the decision the round's tours and grades are still the
       // accepted layout's: the focus is computed for accepted layouts only.
-      focus_current_ = plan_every_iteration_ ? walling_objects() : std::vector<int>{};
-      refresh_open_stops();
+      focus_current_ = plan_every_iteration_ ? escape_.walling_objects() : std::vector<int>{};
+      escape_.refresh_open_stops();
     }
     result_.trace.push_back(step);
     if (progress_) progress_(step);
@@ -597,6 +400,7 @@ class DesignRun {
     std::vector<Pose2> best;
     for (const auto& o : result_.layout.objects) best.push_back(o.pose);
     result_.preferences = check_preferences(scene_, model_, best);
+    result_.covering_moves = escape_.covering_moves();
     result_.gate_fills = round_.gate().fills();
     result_.gate_ms = round_.gate().fill_ms();
     if (result_.tours_planned > 0)
@@ -623,9 +427,9 @@ class DesignRun {
   std::vector<Pose2> poses_;
   std::vector<Pose2> poses_initial_;  //!< the input layout's
   std::vector<bool> movable_;
-  std::vector<int> focus_current_;  //!< walling_objects() of the current layout
-  std::vector<int> open_stops_;     //!< stops with a free goal pose in the current layout
   bool plan_every_iteration_ = true;
+  EscapePolicy escape_;
+  std::vector<int> focus_current_;  //!< walling_objects() of the current layout
   int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
   double planning_ms_ = 0.0;
   TourRound::Outcome outcome_;

@@ -1,0 +1,246 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The design loop's escape from walled-in layouts; see escape.h.
+
+#include "optimize/escape.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "geometry/polygon_ops.h"
+#include "geometry/random.h"
+
+namespace hrs::optimize {
+
+namespace {
+
+//! Smallest vertex-to-edge distance between two polygons, either way (0
+//! when an edge of one crosses the other is not detected; an upper bound
+//! of the gap, enough to tell "near").
+double footprint_gap(const geometry::Polygon& a, const geometry::Polygon& b) {
+  double d = std::numeric_limits<double>::infinity();
+  for (int pass = 0; pass < 2; ++pass) {
+    const geometry::Polygon& p = pass == 0 ? a : b;
+    const geometry::Polygon& q = pass == 0 ? b : a;
+    for (const geometry::Vec2& v : p)
+      for (std::size_t e = 0; e < q.size(); ++e)
+        d = std::min(d, geometry::point_segment_distance(v, q[e], q[(e + 1) % q.size()]));
+  }
+  return d;
+}
+
+}  // namespace
+
+EscapePolicy::EscapePolicy(const geometry::Scene& scene, TourRound& round,
+                           const std::vector<Sequence>& sequences,
+                           const std::vector<bool>& movable, bool escape, bool plan_every)
+    : scene_(scene),
+      round_(round),
+      work_(round.work()),
+      cspace_(round.cspace()),
+      sequences_(sequences),
+      movable_(movable),
+      escape_(escape),
+      plan_every_(plan_every) {}
+
+//! The objects that are stops of some sequence, ascending.
+std::vector<int> EscapePolicy::stop_objects() const {
+  std::vector<int> stops;
+  for (const Sequence& s : sequences_)
+    for (std::size_t i = 1; i < s.nodes.size(); ++i) {
+      const int o = work_.find_object(s.nodes[i]);
+      if (o >= 0 && std::find(stops.begin(), stops.end(), o) == stops.end()) stops.push_back(o);
+    }
+  std::sort(stops.begin(), stops.end());
+  return stops;
+}
+
+//! The stops the door's reachable region misses (grade > 0); `total` is
+//! the summed grade of all `stops`.
+std::vector<int> EscapePolicy::walled_off(const std::vector<int>& stops, double& total) {
+  std::vector<int> walled;
+  total = 0.0;
+  for (int s : stops) {
+    const double b = round_.gate().blockage(round_.goals_of(s));
+    total += b;
+    if (b > 0.0) walled.push_back(s);
+  }
+  return walled;
+}
+
+//! The stops with a free goal pose in the current layout (covers_a_stop).
+void EscapePolicy::refresh_open_stops() {
+  open_stops_.clear();
+  if (!escape_ || !plan_every_) return;
+  for (int s : stop_objects())
+    if (!round_.goals_of(s).empty()) open_stops_.push_back(s);
+}
+
+//! With `escape`: true when moving object `moved` to `to` leaves a stop
+//! that has a free goal pose now without any (docs/optimize.md "Blocked
+//! layouts"). Such a layout has no tour through that stop whatever the
+//! planner does, and once the annealer accepts one (while hot) the move
+//! back is seldom drawn. Only the stops within reach of the object's new
+//! footprint are asked, with the object moved in the C-space and back.
+bool EscapePolicy::covers_a_stop(const Pose2& to, int moved) {
+  if (!escape_ || !plan_every_ || open_stops_.empty()) return false;
+  geometry::Object o = work_.objects[moved];
+  o.pose = to;
+  const geometry::Polygon fp = geometry::world_footprint(o);
+  const Pose2 from = cspace_.object_pose(moved);
+  bool moved_in_cspace = false;
+  bool covers = false;
+  for (int s : open_stops_) {
+    // A goal pose's chair lies within gap + its diagonal of the stop.
+    const double reach = work_.objects[s].approach_or_default().gap + 0.01 +
+                         std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
+    if (s != moved && footprint_gap(geometry::world_footprint(work_.objects[s]), fp) > reach)
+      continue;
+    if (!moved_in_cspace) {
+      cspace_.move_object(moved, to);
+      moved_in_cspace = true;
+    }
+    if (round_.goals_of(s).empty()) {
+      covers = true;
+      break;
+    }
+  }
+  if (moved_in_cspace) cspace_.move_object(moved, from);
+  if (covers) ++covering_moves_;
+  return covers;
+}
+
+//! One unblocking proposal for object `o`: a jump anywhere in the room's
+//! `box` with a quarter turn (1/2), a step of up to 1 m per axis (1/4) or a
+//! quarter turn (1/4), redrawn up to 50 times until valid; nullopt when
+//! no draw was.
+std::optional<Pose2> EscapePolicy::unblock_move(int o, const std::vector<Pose2>& poses,
+                                              const geometry::Box& box, std::mt19937_64& rng,
+                                              const ValidFn& valid) {
+  constexpr double kQuarter = std::numbers::pi / 2;
+  const Pose2 from = work_.objects[o].pose;
+  const double kind = uniform01(rng);
+  for (int attempt = 0; attempt < 50; ++attempt) {
+    Pose2 to = from;
+    if (kind < 0.5) {
+      to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
+      to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
+      to.theta = geometry::wrap_angle(from.theta + std::floor(uniform01(rng) * 4.0) * kQuarter);
+    } else if (kind < 0.75) {
+      to.x += 2.0 * uniform01(rng) - 1.0;
+      to.y += 2.0 * uniform01(rng) - 1.0;
+    } else {
+      to.theta = geometry::wrap_angle(from.theta + (uniform01(rng) < 0.5 ? 1 : -1) * kQuarter);
+    }
+    std::vector<Pose2> p = poses;
+    p[o] = to;
+    if (valid(p, o)) return to;
+  }
+  return std::nullopt;
+}
+
+//! Beyond the paper (docs/optimize.md "Blocked layouts"): when stops are
+//! walled off from the door in the input layout, a greedy search on the
+//! free grid alone (no tour is planned, a few milliseconds a proposal)
+//! moves the objects that wall them in (focus_for) until no stop of any
+//! sequence is walled off, or after kUnblockProposals proposals. A
+//! proposal (jump with a quarter turn, step, or quarter turn, each redrawn
+//! until valid) is kept when the summed grade of the stops does not grow.
+//! Returns true when the layout changed; the annealing starts from it.
+bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
+                         const std::atomic<bool>* stop, const ValidFn& valid,
+                         const PlaceFn& place, DesignResult::Unblock& stats) {
+  static constexpr int kUnblockProposals = 300;
+  if (!escape_ || !plan_every_) return false;
+  const std::vector<int> stops = stop_objects();
+  double score = 0.0;
+  std::vector<int> walled = walled_off(stops, score);
+  stats.walled_before = static_cast<int>(walled.size());
+  stats.walled_after = stats.walled_before;
+  if (walled.empty()) return false;
+  std::mt19937_64 rng(splitmix64(seed ^ 0x756e'626c'6f63'6bULL));
+  const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
+  bool changed = false;
+  for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
+    if (stop && stop->load()) break;
+    const std::vector<int> focus = focus_for(walled, true);
+    if (focus.empty()) break;
+    const int o = focus[uniform_index(rng, focus.size())];
+    const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);
+    ++stats.proposals;
+    if (!to) continue;
+    const Pose2 from = work_.objects[o].pose;
+    place(o, *to);
+    double next = 0.0;
+    std::vector<int> now = walled_off(stops, next);
+    if (next <= score) {
+      score = next;
+      walled = std::move(now);
+      poses[o] = *to;
+      changed = true;
+      ++stats.accepted;
+      refresh_open_stops();
+    } else {
+      place(o, from);
+    }
+  }
+  stats.walled_after = static_cast<int>(walled.size());
+  return changed;
+}
+
+//! The movable objects near `stops` (see walling_objects()); `in_grid`:
+//! only those bordering the door's reachable region.
+std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_grid) {
+  static constexpr double kFocusReach = 2.0;  // metres
+  std::vector<int> out;
+  if (stops.empty()) return out;
+  // The stops' footprints: a stop whose goal poses are all covered (by
+  // what walls it in) has no free goal pose to measure from.
+  std::vector<geometry::Polygon> targets;
+  for (int s : stops) targets.push_back(geometry::world_footprint(work_.objects[s]));
+  std::vector<int> candidates;
+  if (in_grid) {
+    candidates = round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25);
+  } else {
+    for (int i = 0; i < static_cast<int>(movable_.size()); ++i) candidates.push_back(i);
+  }
+  for (int i : candidates) {
+    if (!movable_[i]) continue;
+    bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
+    const geometry::Polygon fp = geometry::world_footprint(work_.objects[i]);
+    for (const geometry::Polygon& t : targets) near = near || footprint_gap(fp, t) <= kFocusReach;
+    if (near) out.push_back(i);
+  }
+  return out;
+}
+
+//! The annealer's focus, with `escape`, when tours are unfound: the
+//! objects that most likely stand between the door and the stops it
+//! misses. When stops are walled off in the free grid (grade > 0): the
+//! movable objects that border the door's reachable region (within the
+//! chair's half length + 25 cm) and are such a stop or lie within
+//! kFocusReach of one of their goal poses, and, for a stop with no free
+//! goal pose at all, the stop and the movable objects within kFocusReach
+//! of it wherever they are. Otherwise (the grid joins
+//! everything, the car still fails: a turn too tight, a gap the grid's
+//! margin lets through): the movable stops where unfound tours broke off
+//! and the movable objects within kFocusReach of their goal poses.
+std::vector<int> EscapePolicy::walling_objects() {
+  if (!escape_) return {};
+  const std::vector<int> walled = round_.walled_stops();
+  if (walled.empty()) return focus_for(round_.failing_stops(), false);
+  std::vector<int> out = focus_for(walled, true);
+  // A stop without a single free goal pose is covered where it stands,
+  // however far the door's region reaches: it and its neighbours join
+  // (measured: a bookshelf facing the bed, otherwise never moved).
+  std::vector<int> covered;
+  for (int s : walled)
+    if (round_.goals_of(s).empty()) covered.push_back(s);
+  for (int i : focus_for(covered, false))
+    if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace hrs::optimize

@@ -1,0 +1,74 @@
+#pragma once
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Beyond the paper: the design loop's escape from layouts that wall stops
+// off from the door (docs/optimize.md "Blocked layouts"), switched by the
+// planner configuration's `escape`:
+//   - unblock(): before the annealing, a greedy search on the free grid
+//     alone moves the objects that wall stops in until none is walled off;
+//   - covers_a_stop(): a move that leaves a stop which has a free goal pose
+//     without any is invalid;
+//   - walling_objects(): the annealer's focus, the objects that most likely
+//     stand between the door and the stops unfound tours miss.
+// The unfound-tour grades themselves are the round's (TourRound::blockage).
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "geometry/polygon_ops.h"
+#include "geometry/scene.h"
+#include "optimize/design.h"
+#include "optimize/sequences.h"
+#include "optimize/tour_round.h"
+
+namespace hrs::optimize {
+
+class EscapePolicy {
+ public:
+  using ValidFn = std::function<bool(const std::vector<Pose2>& poses, int moved)>;
+  using PlaceFn = std::function<void(int object, const Pose2& to)>;
+
+  //! `escape`: the switch; `plan_every`: tours are planned every iteration
+  //! (not with all path weights 0).
+  EscapePolicy(const geometry::Scene& scene, TourRound& round,
+               const std::vector<Sequence>& sequences, const std::vector<bool>& movable,
+               bool escape, bool plan_every);
+
+  //! True when moving object `moved` to `to` leaves a stop that has a free
+  //! goal pose now without any (counted in covering_moves()).
+  bool covers_a_stop(const Pose2& to, int moved);
+  //! Recomputes the stops with a free goal pose in the current layout.
+  void refresh_open_stops();
+  //! The greedy unblocking of `poses` (the current layout, updated);
+  //! `valid` the exact checks of a move, `place` moves an object in the
+  //! working scene and C-space. True when the layout changed.
+  bool unblock(std::vector<Pose2>& poses, std::uint64_t seed, const std::atomic<bool>* stop,
+               const ValidFn& valid, const PlaceFn& place, DesignResult::Unblock& stats);
+  //! The annealer's focus for the current layout (empty without escape).
+  std::vector<int> walling_objects();
+  int covering_moves() const { return covering_moves_; }
+
+ private:
+  std::vector<int> stop_objects() const;
+  std::vector<int> walled_off(const std::vector<int>& stops, double& total);
+  std::optional<Pose2> unblock_move(int o, const std::vector<Pose2>& poses,
+                                    const geometry::Box& box, std::mt19937_64& rng,
+                                    const ValidFn& valid);
+  std::vector<int> focus_for(const std::vector<int>& stops, bool in_grid);
+
+  const geometry::Scene& scene_;
+  TourRound& round_;
+  geometry::Scene& work_;
+  geometry::CSpace& cspace_;
+  const std::vector<Sequence>& sequences_;
+  const std::vector<bool>& movable_;
+  bool escape_;
+  bool plan_every_;
+  std::vector<int> open_stops_;  //!< stops with a free goal pose in the current layout
+  int covering_moves_ = 0;
+};
+
+}  // namespace hrs::optimize
