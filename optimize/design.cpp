@@ -115,10 +115,14 @@ class DesignRun {
     current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
     result_.initial = current_terms_;
     escape_.refresh_open_stops();
-    if (escape_.unblock(
-            poses_, options_.seed, stop_,
-            [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); },
-            [this](int o, const Pose2& to) { place(o, to); }, result_.unblock)) {
+    const auto valid = [this](const std::vector<Pose2>& p, int moved) {
+      return move_valid(p, moved);
+    };
+    const auto put = [this](int o, const Pose2& to) { place(o, to); };
+    result_.unblock.separated = escape_.separate(poses_, options_.seed, valid, put);
+    if (result_.unblock.separated > 0) escape_.refresh_open_stops();
+    if (escape_.unblock(poses_, options_.seed, stop_, valid, put, result_.unblock) ||
+        result_.unblock.separated > 0) {
       plan_current();  // the annealing starts from the unblocked layout
       current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
     }

@@ -112,6 +112,7 @@ struct DesignResult {
   //! made and kept (all 0 when nothing was walled off).
   struct Unblock {
     int walled_before = 0, walled_after = 0, proposals = 0, accepted = 0;
+    int separated = 0;  //!< objects moved to make an invalid input layout valid
   } unblock;
   //! Moves refused because they would leave a stop without any free goal
   //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.

@@ -32,6 +32,36 @@ double footprint_gap(const geometry::Polygon& a, const geometry::Polygon& b) {
 
 }  // namespace
 
+int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
+                           const PlaceFn& place) {
+  static constexpr int kSeparateDraws = 500;
+  if (!escape_ || layout_violation(work_).empty()) return 0;
+  std::mt19937_64 rng(splitmix64(seed ^ 0x7365'7061'7261'7465ULL));
+  const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
+  int moved = 0;
+  for (int pass = 0; pass < 3 && !layout_violation(work_).empty(); ++pass) {
+    for (std::size_t i = 0; i < poses.size(); ++i) {
+      const int o = static_cast<int>(i);
+      if (!movable_[i] || object_violation(work_, o).empty()) continue;
+      for (int draw = 0; draw < kSeparateDraws; ++draw) {
+        Pose2 to = poses[i];
+        to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
+        to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
+        to.theta = geometry::wrap_angle(to.theta + std::floor(uniform01(rng) * 4.0) *
+                                                       (std::numbers::pi / 2));
+        std::vector<Pose2> p = poses;
+        p[i] = to;
+        if (!valid(p, o)) continue;
+        place(o, to);
+        poses[i] = to;
+        ++moved;
+        break;
+      }
+    }
+  }
+  return moved;
+}
+
 EscapePolicy::EscapePolicy(const geometry::Scene& scene, TourRound& round,
                            const std::vector<Sequence>& sequences,
                            const std::vector<bool>& movable, bool escape, bool plan_every)
@@ -144,14 +174,18 @@ std::optional<Pose2> EscapePolicy::unblock_move(int o, const std::vector<Pose2>&
 //! walled off from the door in the input layout, a greedy search on the
 //! free grid alone (no tour is planned, a few milliseconds a proposal)
 //! moves the objects that wall them in (focus_for) until no stop of any
-//! sequence is walled off, or after kUnblockProposals proposals. A
+//! sequence is walled off, or after kUnblockProposals proposals plus
+//! kUnblockPerObject per movable object (a room of 40 objects has more to
+//! move out of the way than one of 5). A
 //! proposal (jump with a quarter turn, step, or quarter turn, each redrawn
 //! until valid) is kept when the summed grade of the stops does not grow.
 //! Returns true when the layout changed; the annealing starts from it.
 bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
                          const std::atomic<bool>* stop, const ValidFn& valid,
                          const PlaceFn& place, DesignResult::Unblock& stats) {
-  static constexpr int kUnblockProposals = 300;
+  static constexpr int kUnblockProposals = 300, kUnblockPerObject = 15;
+  const int budget = kUnblockProposals +
+                     kUnblockPerObject * static_cast<int>(std::count(movable_.begin(), movable_.end(), true));
   if (!escape_ || !plan_every_) return false;
   const std::vector<int> stops = stop_objects();
   double score = 0.0;
@@ -162,9 +196,15 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   std::mt19937_64 rng(splitmix64(seed ^ 0x756e'626c'6f63'6bULL));
   const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
   bool changed = false;
-  for (int k = 0; k < kUnblockProposals && !walled.empty(); ++k) {
+  for (int k = 0; k < budget && !walled.empty(); ++k) {
     if (stop && stop->load()) break;
-    const std::vector<int> focus = focus_for(walled, true);
+    std::vector<int> focus = focus_for(walled, true);
+    // Nothing near a walled stop borders the door's region (a long way in,
+    // through another room): whatever movable object borders it may be the
+    // one that closes the way.
+    if (focus.empty())
+      for (int i : round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25))
+        if (movable_[static_cast<std::size_t>(i)]) focus.push_back(i);
     if (focus.empty()) break;
     const int o = focus[uniform_index(rng, focus.size())];
     const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);

@@ -47,6 +47,14 @@ class EscapePolicy {
   //! working scene and C-space. True when the layout changed.
   bool unblock(std::vector<Pose2>& poses, std::uint64_t seed, const std::atomic<bool>* stop,
                const ValidFn& valid, const PlaceFn& place, DesignResult::Unblock& stats);
+  //! An input layout that is not valid (objects overlapping each other, the
+  //! door's clear zone or the walls) is separated first: each movable object
+  //! in violation, in index order, jumps to a uniform position in the room's
+  //! box with its heading or a quarter turn of it, redrawn until `valid`
+  //! (at most kSeparateDraws draws), for up to three passes. Returns the
+  //! objects moved; 0 when the layout was valid or escape is off.
+  int separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
+               const PlaceFn& place);
   //! The annealer's focus for the current layout (empty without escape).
   std::vector<int> walling_objects();
   int covering_moves() const { return covering_moves_; }
