@@ -20,9 +20,9 @@ namespace {
 double squared(double v) { return v * v; }
 
 //! A bounded preference term: kPreferencePenalty · (1 − exp(−z²/2)),
-//! z = residual / (2 · tolerance).
-double bounded_term(double residual, double tolerance) {
-  const double z = residual / (2.0 * tolerance);
+//! z = residual / max(2 · tolerance, floor).
+double bounded_term(double residual, double tolerance, double floor) {
+  const double z = residual / std::max(2.0 * tolerance, floor);
   return kPreferencePenalty * -std::expm1(-0.5 * z * z);
 }
 
@@ -121,16 +121,17 @@ InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
       const double e = geometry::norm(a.position() - b.position()) - *rel.distance;
       c.distance += rel.weight * (bounded_ ? bounded_term(std::abs(e), std::max(
                                                  tol.relation_distance,
-                                                 tol.relation_distance_share * *rel.distance))
+                                                 tol.relation_distance_share * *rel.distance),
+                                                 kDistanceScaleFloor)
                                            : squared(e));
     }
     if (rel.angle) {
       const double e = geometry::wrap_angle(a.theta - b.theta - *rel.angle);
-      c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle) : squared(e));
+      c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle, kAngleScaleFloor) : squared(e));
     }
     if (rel.faces) {
       const double e = facing_error(a, b);
-      c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle) : squared(e));
+      c.rotation += rel.weight * (bounded_ ? bounded_term(std::abs(e), tol.relation_angle, kAngleScaleFloor) : squared(e));
     }
   }
   for (std::size_t i = 0; i < scene_.objects.size(); ++i) {
@@ -143,11 +144,11 @@ InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
       geometry::Object o = scene_.objects[i];
       o.pose = poses[i];
       const double r = wall_distance(geometry::world_footprint(o), e) - *wall->distance;
-      c.distance += bounded_ ? bounded_term(std::abs(r), tol.wall_distance) : squared(r);
+      c.distance += bounded_ ? bounded_term(std::abs(r), tol.wall_distance, kDistanceScaleFloor) : squared(r);
     }
     if (wall->angle) {
       const double r = geometry::wrap_angle(poses[i].theta - wall_normal_angle(e) - *wall->angle);
-      c.rotation += bounded_ ? bounded_term(std::abs(r), tol.wall_angle) : squared(r);
+      c.rotation += bounded_ ? bounded_term(std::abs(r), tol.wall_angle, kAngleScaleFloor) : squared(r);
     }
   }
   return c;

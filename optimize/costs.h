@@ -66,6 +66,12 @@ inline constexpr double kUnfoundPerimeterFactor = 3.0;
 //! The most one preference term costs with bounded preferences (before the
 //! interior weight and the relation's weight).
 inline constexpr double kPreferencePenalty = 2.0;
+//! The bounded terms' scale is at least this (metres, radians): a term is a
+//! smooth well about its target, not a cliff at its tolerance, so that the
+//! annealer can cross a layout a few decimetres or degrees away from the
+//! preferences (the exact pose is the polish's job).
+inline constexpr double kDistanceScaleFloor = 0.3;
+inline constexpr double kAngleScaleFloor = 15.0 * 3.14159265358979323846 / 180.0;
 //! Walls this close (metres) to the nearest one also count as "nearest".
 inline constexpr double kWallTieTolerance = 0.01;
 
@@ -111,7 +117,8 @@ class CostModel {
 
   //! With `on`, interior() charges each preference term (the terms
   //! optimize/preferences.h counts) kPreferencePenalty · (1 − exp(−z²/2)),
-  //! z = residual / (2 · its tolerance), times the relation's weight, instead
+  //! z = residual / max(2 · its tolerance, the scale floor), times the
+  //! relation's weight, instead
   //! of its squared residual: bounded, so that no preference outweighs an
   //! unfound tour, and in units of what a designer tolerates, so that 3° off
   //! a wall counts like 5 cm off it (docs/optimize.md "Preferences").
