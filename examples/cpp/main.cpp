@@ -31,8 +31,9 @@ int main(int argc, char** argv) {
     const planning::LegResult leg = planner.plan(start, {4.03, 2.39, -1.79}, /*seed=*/1);
     std::printf("leg: found %d, %.2f m, %s\n", leg.found, leg.path.length(), leg.path.word().c_str());
 
-    optimize::DesignOptions options;  // hrspace design's defaults: seed 1, 700 iterations
-    options.iterations = 20;
+    optimize::DesignOptions options;  // hrspace design's defaults: seed 1, 700 iterations, all cores
+    options.seed = 2;
+    options.iterations = 20;  // a quick run
     options.planner = optimize::PlannerConfig::from_preset("default");  // or api::parse_planner("default,-trees")
     const optimize::DesignResult result = optimize::design(scene, options);
     std::printf("tours found %d/%d, preferences met %d/%d\n", result.final.tours_found,
