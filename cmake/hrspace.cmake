@@ -23,9 +23,13 @@ function(hrspace_add_module name)
   cmake_parse_arguments(M "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(hrspace_${name} STATIC ${M_SOURCES})
   add_library(hrspace::${name} ALIAS hrspace_${name})
+  # Installed headers live in include/hrspace/<module>/ and include each
+  # other as "geometry/scene.h" (include/hrspace on the path); include/ is on
+  # it too, so that consumers may write <hrspace/geometry/scene.h>.
   target_include_directories(hrspace_${name} PUBLIC
     $<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>
-    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/hrspace>)
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/hrspace>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
   # Position-independent, so that the Python module (a shared object) links
   # the same static libraries; exported as hrspace::<name> (cmake/install.cmake).
   set_target_properties(hrspace_${name} PROPERTIES POSITION_INDEPENDENT_CODE ON EXPORT_NAME ${name})
