@@ -364,7 +364,8 @@ class DesignRun {
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
     result_.polish.tried = pr.tried;
     result_.polish.kept = pr.kept;
-    if (pr.kept == 0) return;
+    result_.polish.squared = pr.squared;
+    if (pr.kept == 0 && pr.squared == 0) return;
     for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
     result_.final = terms;
     result_.valid = layout_violation(result_.layout).empty();

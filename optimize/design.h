@@ -119,7 +119,7 @@ struct DesignResult {
   int covering_moves = 0;
   //! The final polish (optimize/polish.h): poses planned and kept.
   struct Polish {
-    int tried = 0, kept = 0;
+    int tried = 0, kept = 0, squared = 0;
     int tours_found_before = 0, met_before = 0;  //!< of the annealer's best layout
   } polish;
   long legs_refused = 0;     //!< legs the free grid proved impossible

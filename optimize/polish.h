@@ -5,6 +5,8 @@
 // poses that would meet it (optimize/preferences.h, preferred_poses), one
 // at a time; a pose is kept when it is valid, every tour found before is
 // still found (the tours are planned again) and more preferences are met.
+// Last, each movable object whose heading no preference fixes is turned
+// square to its nearest wall, on the same conditions (no preference lost).
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order), so the result is a function of the layout and the planner's
 // seeds, whatever the thread count.
@@ -32,7 +34,8 @@ struct PolishHooks {
 
 struct PolishResult {
   int tried = 0;  //!< poses planned
-  int kept = 0;   //!< poses kept
+  int kept = 0;   //!< poses kept that meet more preferences
+  int squared = 0;  //!< objects turned square to their wall (no heading preference)
 };
 
 //! Polishes `poses` (the best layout, whose terms are `terms`) in place;
