@@ -113,10 +113,10 @@ int CostModel::nearest_wall(int object, const Pose2& pose) const {
 InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
   assert(poses.size() == scene_.objects.size());
   InteriorCosts c;
+  const PreferenceTolerances tol;
   for (const auto& r : relations_) {
     const auto& rel = scene_.relations[r.relation];
     const Pose2 &a = poses[r.a], &b = poses[r.b];
-    const PreferenceTolerances tol;
     if (rel.distance) {
       const double e = geometry::norm(a.position() - b.position()) - *rel.distance;
       c.distance += rel.weight * (bounded_ ? bounded_term(std::abs(e), std::max(
@@ -139,7 +139,6 @@ InteriorCosts CostModel::interior(const std::vector<Pose2>& poses) const {
     if (!wall || (!wall->distance && !wall->angle)) continue;
     const int idx = static_cast<int>(i);
     const int e = nearest_wall(idx, poses[i]);
-    const PreferenceTolerances tol;
     if (wall->distance) {
       geometry::Object o = scene_.objects[i];
       o.pose = poses[i];

@@ -118,24 +118,16 @@ std::string PlannerConfig::describe() const {
 }
 
 std::string PlannerConfig::help() {
+  const auto row = [](std::string name, const char* what) {
+    name.resize(std::max<std::size_t>(name.size(), 10), ' ');
+    return "    " + name + what + "\n";
+  };
   std::string out = "  presets:\n";
-  for (const Preset& p : presets()) {
-    std::string name = p.name;
-    name.resize(std::max<std::size_t>(name.size(), 10), ' ');
-    out += "    " + name + p.what + "\n";
-  }
+  for (const Preset& p : presets()) out += row(p.name, p.what);
   out += "  switches (NAME on, -NAME off), the design loop's:\n";
-  for (const Switch& s : switches()) {
-    std::string name = s.name;
-    name.resize(std::max<std::size_t>(name.size(), 10), ' ');
-    out += "    " + name + s.what + "\n";
-  }
+  for (const Switch& s : switches()) out += row(s.name, s.what);
   out += "  and the proposed planner's techniques (NAME, -NAME, NAME=N):\n";
-  for (const ReuseOptions::Technique& t : ReuseOptions::techniques()) {
-    std::string name = t.name;
-    name.resize(std::max<std::size_t>(name.size(), 10), ' ');
-    out += "    " + name + t.what + "\n";
-  }
+  for (const ReuseOptions::Technique& t : ReuseOptions::techniques()) out += row(t.name, t.what);
   return out;
 }
 
