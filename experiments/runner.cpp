@@ -497,7 +497,16 @@ int write_tables(const Study& study, const StudyConfig& config) {
     rows.push_back(std::move(run));
   }
   write_text_atomic(study_dir / "runs.csv", to_csv(rows));
-  write_text_atomic(study_dir / "summary.csv", to_csv(study.summarize(rows)));
+  // Provenance: each summary row carries the commit of the runs behind it
+  // ("mixed" when they differ, which identity checks keep out of one DIR).
+  std::string commit;
+  for (const Row& r : rows) {
+    const std::string c = r.get("commit").value_or("unknown");
+    commit = commit.empty() || commit == c ? c : "mixed";
+  }
+  Table summary = study.summarize(rows);
+  for (Row& r : summary) r.set("commit", commit);
+  write_text_atomic(study_dir / "summary.csv", to_csv(summary));
   for (const auto& name : table_order)
     write_text_atomic(study_dir / (name + ".csv"), to_csv(tables[name]));
   return missing;

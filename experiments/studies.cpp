@@ -21,7 +21,8 @@ const std::vector<Study>& studies() {
   static const std::vector<Study> all = [] {
     std::vector<Study> s = {
         shared::timing_study(),         shared::rs_decomposition_study(),
-        shared::rrt_iterations_study(), shared::small_room_study(),
+        shared::rrt_iterations_study(), shared::sensitivity_study(),
+        shared::small_room_study(),
         shared::ao_graph_study(),       shared::designs_study(),
         shared::hard_rooms_study(),     shared::design_loop_study(),
         shared::method_study(),         shared::generalization_study(),

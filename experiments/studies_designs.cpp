@@ -34,7 +34,7 @@ std::vector<RunSpec> small_runs(const StudyConfig& c) {
       c.rooms.empty() ? std::vector<std::string>{"bedroom", "small_bedroom"} : c.rooms;
   for (const auto& room : rooms)
     for (const auto& seed : seed_list(c))
-      for (const char* planner : {"baseline", "all"})
+      for (const char* planner : {"baseline", "paper", "all"})
         runs.push_back(
             make_run("small_room",
                      {{"mode", "design"}, {"room", room}, {"seed", seed}, {"planner", planner}}));
@@ -42,7 +42,7 @@ std::vector<RunSpec> small_runs(const StudyConfig& c) {
 }
 
 RunOutput small_run(const RunSpec& spec, RunContext& context) {
-  const bool keep = param(spec, "planner") == "all" && int_param(spec, "seed") <= 2;
+  const bool keep = param(spec, "planner") != "baseline" && int_param(spec, "seed") <= 2;
   return design_or_replay(spec, context, keep);
 }
 
@@ -58,9 +58,20 @@ std::vector<RunSpec> ao_runs(const StudyConfig& c) {
   std::vector<RunSpec> runs;
   const std::vector<std::string> rooms =
       c.rooms.empty() ? std::vector<std::string>{"office", "office_round_table"} : c.rooms;
-  for (const auto& room : rooms)
-    for (const auto& seed : seed_list(c))
-      runs.push_back(make_run("ao_graph", {{"room", room}, {"seed", seed}, {"planner", "all"}}));
+  // The paper's planner and the default preset with the AO graph's α; the
+  // default preset again with uniform α, the control: does the heavier
+  // table sit nearer the door because of α, or anyway?
+  struct Arm {
+    const char* planner;
+    const char* alpha;
+  };
+  for (const Arm arm : {Arm{"paper", "scene"}, Arm{"all", "scene"}, Arm{"all", "uniform"}})
+    for (const auto& room : rooms)
+      for (const auto& seed : seed_list(c))
+        runs.push_back(make_run("ao_graph", {{"room", room},
+                                             {"seed", seed},
+                                             {"planner", arm.planner},
+                                             {"alpha", arm.alpha}}));
   return runs;
 }
 
@@ -87,7 +98,8 @@ double tour_distance(const std::vector<planning::Tour>& tours, const std::string
 RunOutput ao_run(const RunSpec& spec, RunContext& context) {
   const geometry::Scene scene = load_room(context.config, param(spec, "room"));
   const auto seed = static_cast<std::uint64_t>(int_param(spec, "seed"));
-  const optimize::DesignOptions o = run_options(spec, context);
+  optimize::DesignOptions o = run_options(spec, context);
+  o.uniform_alpha = param(spec, "alpha") == "uniform";
   const optimize::DesignResult r = optimize::design(scene, o, context.stop);
   RunOutput out = design_output(r);
   if (out.stopped) return out;
@@ -122,7 +134,7 @@ RunOutput ao_run(const RunSpec& spec, RunContext& context) {
     out.measures.set("heavier", pair[heavy]);
     out.measures.set("heavier_nearer", d[heavy] < d[1 - heavy] ? 1L : 0L);
   }
-  if (seed <= 2) keep_design(context, spec.key, r, o, param(spec, "planner"));
+  if (seed <= 2 && !o.uniform_alpha) keep_design(context, spec.key, r, o, param(spec, "planner"));
   return out;
 }
 
@@ -131,7 +143,7 @@ Table ao_summary(const Table& runs) {
   for (const char* x : {"obj1_alpha", "obj1_door_dist_m", "obj1_tour_dist_m", "obj2_alpha",
                         "obj2_door_dist_m", "obj2_tour_dist_m", "heavier_nearer"})
     m.push_back(x);
-  return summarize_table(runs, {"room"}, m);
+  return summarize_table(runs, {"room", "planner", "alpha"}, m);
 }
 
 // --- designs ----------------------------------------------------------------
@@ -139,13 +151,14 @@ Table ao_summary(const Table& runs) {
 std::vector<RunSpec> designs_runs(const StudyConfig& c) {
   std::vector<RunSpec> runs;
   const int n = std::min(c.seeds, 4);
-  for (const auto& room : rooms_of(c, {"bedroom", "office", "living_room"}))
-    for (int seed = 1; seed <= n; ++seed)
-      runs.push_back(make_run("designs", {{"figure", "cover"},
-                                          {"mode", "design"},
-                                          {"room", room},
-                                          {"seed", std::to_string(seed)},
-                                          {"planner", "all"}}));
+  for (const char* planner : {"paper", "all"})
+    for (const auto& room : rooms_of(c, {"bedroom", "office", "living_room"}))
+      for (int seed = 1; seed <= n; ++seed)
+        runs.push_back(make_run("designs", {{"figure", "cover"},
+                                            {"mode", "design"},
+                                            {"room", room},
+                                            {"seed", std::to_string(seed)},
+                                            {"planner", planner}}));
   const std::string fig1 = c.rooms.empty() ? "bedroom" : c.rooms.front();
   for (const char* w : {"0", "scene"})
     runs.push_back(make_run("designs", {{"figure", "fig1"},
@@ -162,7 +175,7 @@ RunOutput designs_run(const RunSpec& spec, RunContext& context) {
 }
 
 Table designs_summary(const Table& runs) {
-  return summarize_table(runs, {"figure", "room", "path_weights"}, kDesignMeasures);
+  return summarize_table(runs, {"figure", "room", "planner", "path_weights"}, kDesignMeasures);
 }
 
 // --- hard_rooms and design_loop ---------------------------------------------

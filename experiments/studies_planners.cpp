@@ -4,8 +4,12 @@
 // Fig. "rrt-it"). docs/experiments.md says what each measures.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <random>
+#include <string>
 
 #include "experiments/stats.h"
 #include "experiments/studies_shared.h"
@@ -65,6 +69,8 @@ std::vector<RunSpec> rsd_runs(const StudyConfig& c) {
   return runs;
 }
 
+void rsd_lookup_cost(const rs::Decomposition& d, RunOutput& out);
+
 //! The decomposition at a radius, in an empty room twice the size of the
 //! first room's bounding box (§V-A), and its accuracy on random queries.
 RunOutput rsd_regions(const RunSpec& spec, RunContext& context) {
@@ -92,6 +98,7 @@ RunOutput rsd_regions(const RunSpec& spec, RunContext& context) {
   out.measures.set("infeasible_fraction", a.infeasible_fraction);
   out.measures.set("mean_relative_excess", a.mean_relative_excess);
   out.measures.set("queries", a.queries);
+  rsd_lookup_cost(d, out);
   Table samples;
   for (const auto& s : d.samples()) {
     Row row;
@@ -105,6 +112,50 @@ RunOutput rsd_regions(const RunSpec& spec, RunContext& context) {
   return out;
 }
 
+//! Nanoseconds per call of `f` over `pairs`, the best of 5 passes (the
+//! least disturbed by other work on the machine).
+template <class F>
+double ns_per_query(const std::vector<std::pair<geometry::Pose2, geometry::Pose2>>& pairs, F f) {
+  double best = std::numeric_limits<double>::infinity();
+  volatile double sink = 0.0;
+  for (int pass = 0; pass < 5; ++pass) {
+    const auto t0 = std::chrono::steady_clock::now();
+    double sum = 0.0;
+    for (const auto& [a, b] : pairs) sum += f(a, b);
+    const auto t1 = std::chrono::steady_clock::now();
+    sink = sink + sum;
+    best = std::min(best, std::chrono::duration<double, std::nano>(t1 - t0).count() /
+                              static_cast<double>(pairs.size()));
+  }
+  return best;
+}
+
+//! The cost of the decomposition's look-up (§V-A) against the exact
+//! shortest RS length it approximates: random pairs "near" (both poses in
+//! a 1 m box) and "far" (in a box of the room's size), ns per query.
+void rsd_lookup_cost(const rs::Decomposition& d, RunOutput& out) {
+  const double radius = d.options().radius;
+  for (const char* which : {"near", "far"}) {
+    const double half =
+        std::string(which) == "near" ? 1.0 : std::max(d.options().room_width, d.options().room_depth);
+    std::mt19937_64 rng(std::string(which) == "near" ? 43 : 42);
+    std::uniform_real_distribution<double> pos(-half, half), ang(-std::numbers::pi, std::numbers::pi);
+    std::vector<std::pair<geometry::Pose2, geometry::Pose2>> pairs(4096);
+    for (auto& [a, b] : pairs) {
+      a = {pos(rng), pos(rng), ang(rng)};
+      b = {pos(rng), pos(rng), ang(rng)};
+    }
+    const std::string w = which;
+    out.measures.set("lookup_ns_" + w, ns_per_query(pairs, [&](const auto& a, const auto& b) {
+                       const double l = d.predicted_length(a, b);
+                       return std::isfinite(l) ? l : 0.0;
+                     }));
+    out.measures.set("exact_ns_" + w, ns_per_query(pairs, [&](const auto& a, const auto& b) {
+                       return rs::shortest_length(a, b, radius);
+                     }));
+  }
+}
+
 RunOutput rsd_run(const RunSpec& spec, RunContext& context) {
   if (param(spec, "kind") == "regions") return rsd_regions(spec, context);
   return design_or_replay(spec, context);
@@ -113,7 +164,8 @@ RunOutput rsd_run(const RunSpec& spec, RunContext& context) {
 Table rsd_summary(const Table& runs) {
   std::vector<std::string> m = kDesignMeasures;
   for (const char* x : {"radius_m", "samples", "drawn", "regions", "word_accuracy",
-                        "infeasible_fraction", "mean_relative_excess"})
+                        "infeasible_fraction", "mean_relative_excess", "lookup_ns_near",
+                        "exact_ns_near", "lookup_ns_far", "exact_ns_far"})
     m.push_back(x);
   Table s = summarize_table(runs, {"kind", "room", "planner", "radius"}, m);
   add_ratio(s, "planner", "baseline", {"kind", "room"}, "planning_s");
@@ -180,7 +232,66 @@ Table rrt_summary(const Table& runs) {
   return summarize_table(runs, {"kind", "room", "tree_max_nodes"}, m);
 }
 
+// --- sensitivity ------------------------------------------------------------
+
+//! The parameter settings of the sensitivity sweep: the paper's values
+//! (M = 10 sequences, k = 10 nearest nodes, goal-pose density 2) and one
+//! parameter at a time halved and doubled.
+std::vector<std::string> sensitivity_settings(const StudyConfig& c) {
+  if (c.quick) return {"base", "m=5"};
+  return {"base", "m=5", "m=20", "k=5", "k=20", "density=1", "density=4"};
+}
+
+std::vector<RunSpec> sensitivity_runs(const StudyConfig& c) {
+  std::vector<RunSpec> runs;
+  const int seeds = std::min(c.seeds, 5);
+  for (const auto& room : rooms_of(c, {"bedroom"}))
+    for (const auto& setting : sensitivity_settings(c))
+      for (int seed = 1; seed <= seeds; ++seed)
+        runs.push_back(make_run("sensitivity", {{"mode", "design"},
+                                                {"room", room},
+                                                {"seed", std::to_string(seed)},
+                                                {"planner", "all"},
+                                                {"setting", setting}}));
+  return runs;
+}
+
+RunOutput sensitivity_run(const RunSpec& spec, RunContext& context) {
+  geometry::Scene scene = load_room(context.config, param(spec, "room"));
+  optimize::DesignOptions o = run_options(spec, context);
+  const std::string setting = param(spec, "setting");
+  if (setting != "base") {
+    const std::size_t eq = setting.find('=');
+    const std::string name = setting.substr(0, eq);
+    const double value = std::stod(setting.substr(eq + 1));
+    if (name == "m") scene.activity.sequences = static_cast<int>(value);
+    if (name == "k") o.tour.planner.k_nearest = static_cast<int>(value);
+    if (name == "density") o.tour.goals.density = value;
+  }
+  RunOutput out = design_output(optimize::design(scene, o, context.stop));
+  if (out.stopped) return out;
+  out.measures.set("m", scene.activity.sequences);
+  out.measures.set("k", o.tour.planner.k_nearest);
+  out.measures.set("density", o.tour.goals.density);
+  return out;
+}
+
+Table sensitivity_summary(const Table& runs) {
+  Table s = summarize_table(runs, {"room", "setting"}, kDesignMeasures);
+  add_ratio(s, "setting", "base", {"room"}, "planning_s");
+  return s;
+}
+
 }  // namespace
+
+Study shared::sensitivity_study() {
+  return {"sensitivity",
+          "beyond the paper: M, k and the goal-pose density (§III-A, §III-B, §III-C)",
+          "designs with M, k or the goal-pose density halved and doubled, default planner",
+          sensitivity_runs,
+          sensitivity_run,
+          sensitivity_summary};
+}
 
 Study shared::timing_study() {
   return {"timing",
@@ -188,7 +299,7 @@ Study shared::timing_study() {
           "reduction (§VI-A)",
           "baseline vs proposed planners: whole designs and replays of identical layouts",
           timing_runs,
-          [](const RunSpec& s, RunContext& c) { return design_or_replay(s, c); },
+          [](const RunSpec& s, RunContext& c) { return design_or_replay(s, c, false, true); },
           timing_summary};
 }
 

@@ -181,7 +181,7 @@ void keep_design(const RunContext& context, const std::string& key, const optimi
   optimize::write_design(r, info, context.study_dir / "designs" / key);
 }
 
-RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep) {
+RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep, bool trace) {
   const std::string room = param(spec, "room");
   const std::string planner = param(spec, "planner");
   const std::string mode = param(spec, "mode");
@@ -203,6 +203,18 @@ RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep) 
     if (out.stopped) return out;
     if (record) context.recordings->put(label, seed, o.iterations, layouts);
     if (keep) keep_design(context, spec.key, r, o, planner);
+    if (trace) {
+      Table t;
+      for (std::size_t i = 0; i < r.trace.size(); ++i) {
+        Row row;
+        row.set("iteration", static_cast<long>(r.trace[i].anneal.iteration));
+        row.set("planning_ms", r.trace[i].planning_ms);
+        row.set("planned", r.trace[i].planned ? 1L : 0L);
+        row.set("best_cost", r.trace[i].anneal.best_cost);
+        t.push_back(std::move(row));
+      }
+      out.tables.emplace_back("trace", std::move(t));
+    }
     return out;
   }
   // Replay: the layouts the baseline design of this room and seed planned.

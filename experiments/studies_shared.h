@@ -53,8 +53,11 @@ RunOutput design_output(const optimize::DesignResult& r);
 void keep_design(const RunContext& context, const std::string& key, const optimize::DesignResult& r,
                  const optimize::DesignOptions& o, const std::string& planner);
 //! A design run (mode "design") or a replay of the baseline's layouts (mode
-//! "replay"): the measures of one (room, planner, seed).
-RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep = false);
+//! "replay"): the measures of one (room, planner, seed). With `trace`, a
+//! design run also returns the table "trace": per annealing iteration its
+//! planning time and whether the M tours were planned.
+RunOutput design_or_replay(const RunSpec& spec, RunContext& context, bool keep = false,
+                           bool trace = false);
 
 //! The measures summarize_table() groups for design and replay runs.
 inline const std::vector<std::string> kDesignMeasures = {
@@ -68,6 +71,7 @@ inline const std::vector<std::string> kDesignMeasures = {
 Study timing_study();
 Study rs_decomposition_study();
 Study rrt_iterations_study();
+Study sensitivity_study();
 // studies_designs.cpp: what the designs look like and how the loop fares.
 Study small_room_study();
 Study ao_graph_study();

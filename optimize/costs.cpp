@@ -51,6 +51,7 @@ CostModel::CostModel(const geometry::Scene& scene, std::vector<Sequence> sequenc
     mean += seq_weight_[k] * sum / static_cast<double>(nodes.size() - 1);
   }
   for (const auto& [id, a] : alpha) alpha_hat_[id] = mean > 0.0 ? a / mean : 0.0;
+  alpha_scene_ = alpha_hat_;
 
   const auto& room = scene_.room.polygon;
   for (std::size_t i = 0; i < room.size(); ++i)
@@ -63,6 +64,12 @@ CostModel::CostModel(const geometry::Scene& scene, std::vector<Sequence> sequenc
       throw InputError("relation names an unknown object: " + rel.a + ", " + rel.b);
     relations_.push_back({a, b, static_cast<int>(r)});
   }
+}
+
+void CostModel::set_uniform_alpha(bool on) {
+  alpha_hat_ = alpha_scene_;
+  if (on)
+    for (auto& [id, a] : alpha_hat_) a = 1.0;
 }
 
 double CostModel::object_weight(const std::string& id) const {

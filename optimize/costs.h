@@ -124,6 +124,9 @@ class CostModel {
   //! a wall counts like 5 cm off it (docs/optimize.md "Preferences").
   void set_bounded_preferences(bool on) { bounded_ = on; }
   bool bounded_preferences() const { return bounded_; }
+  //! With `on`, every object's α̂ is 1: legs count alike whatever their
+  //! end object (the control of the α experiment, docs/experiments.md).
+  void set_uniform_alpha(bool on);
   //! Unweighted interior costs of object poses (scene order).
   InteriorCosts interior(const std::vector<Pose2>& poses) const;
   //! α̂-weighted [length, rotation, clearance deficit] of one tour of
@@ -164,6 +167,7 @@ class CostModel {
   std::map<std::string, double> alpha_hat_;
   double perimeter_ = 0.0;
   bool bounded_ = false;
+  std::map<std::string, double> alpha_scene_;  //!< α̂ from the sequences
   struct RelationIndex {
     int a, b;
     int relation;  // index into scene_.relations

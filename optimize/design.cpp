@@ -105,6 +105,7 @@ class DesignRun {
     for (const auto& o : scene.objects) poses_.push_back(o.pose);
     poses_initial_ = poses_;
     model_.set_bounded_preferences(options.planner.prefer);
+    model_.set_uniform_alpha(options.uniform_alpha);
     result_.planned_every_iteration = plan_every_iteration_;
   }
 

@@ -57,6 +57,9 @@ struct DesignOptions {
   //! `tour.planner.skip_tried_goal_nodes` is taken from it.
   PlannerConfig planner;
   planning::ReachGateOptions gate;  //!< the grid behind refusals and escape
+  //! Every object's α̂ set to 1 (CostModel::set_uniform_alpha): the control
+  //! of the α experiment; off in every product run.
+  bool uniform_alpha = false;
   //! When set, the object poses of every planned layout are appended here,
   //! in planning order (the input of replay_planning()).
   std::vector<std::vector<Pose2>>* layouts_out = nullptr;

@@ -28,8 +28,8 @@ other options, scenes or code is refused (exit 2), never mixed in.
   --jobs N     designs run at once, one thread each (default 1)
   --publish    also copy the figures, summaries and REPRODUCTION.md into
                paper_figures/ (what README and docs embed)
-  STUDY ...    timing rs_decomposition rrt_iterations small_room ao_graph designs method
-               hard_rooms design_loop generalization
+  STUDY ...    timing rs_decomposition rrt_iterations sensitivity small_room ao_graph designs
+               hard_rooms design_loop method generalization
 
 Environment: HRSPACE_BIN uses that hrspace binary instead of building one.
 USAGE

@@ -112,6 +112,21 @@ TEST(Costs, PathTermsWeightLegsByAlphaOfTheirEnd) {
   EXPECT_NEAR(eq.total(), 5.0, 1e-12);
 }
 
+TEST(Costs, UniformAlphaWeighsEveryLegAlikeAndSwitchesBack) {
+  const Scene s = two_box_scene(R"({"path": [1, 0, 0], "interior": [0, 0]})");
+  CostModel model(s, scene_sequences(s));
+  const std::vector<Pose2> poses{s.objects[0].pose, s.objects[1].pose};
+  const auto tour = hand_tour({"door", "a", "b"}, {2.0, 3.0}, {0, 0}, {0, 0});
+  model.set_uniform_alpha(true);
+  EXPECT_EQ(model.object_weight("a"), 1.0);
+  EXPECT_EQ(model.object_weight("b"), 1.0);
+  // Legs 2 m and 3 m counted alike: 5 (with the scene's α: 4/3·2 + 2/3·3).
+  EXPECT_NEAR(model.evaluate(poses, {tour}).path_length, 5.0, 1e-12);
+  model.set_uniform_alpha(false);
+  EXPECT_NEAR(model.object_weight("a"), 4.0 / 3.0, 1e-12);
+  EXPECT_NEAR(model.evaluate(poses, {tour}).path_length, 4.0 / 3 * 2 + 2.0 / 3 * 3, 1e-12);
+}
+
 TEST(Costs, SequenceLikelihoodsAreNormalized) {
   Scene s = two_box_scene(R"({"path": [1, 0, 0], "interior": [0, 0]})");
   s.activity.transitions["door"] = {{"a", 0.75}, {"b", 0.25}};
