@@ -11,6 +11,7 @@
 
 #include "api/operations.h"
 #include "geometry/error.h"
+#include "geometry/scene.h"
 
 namespace hrs::cli {
 
@@ -119,20 +120,10 @@ std::string format_number(double v) {
 }
 
 std::string read_input(const std::string& path) {
-  if (path == "-") {
-    std::string text(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>{});
-    if (std::cin.bad()) throw InputError("stdin: read error");
-    return text;
-  }
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path + ": is a directory, expected a file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file (missing or unreadable)");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path + ": cannot read file");
-  return buffer.str();
+  // Bounded (geometry::limits::kInputBytes): /dev/zero, a FIFO or a huge
+  // file is one message naming the input, never unbounded memory.
+  if (path == "-") return geometry::read_input_stream(std::cin, "stdin");
+  return geometry::read_input_file(path);
 }
 
 namespace {

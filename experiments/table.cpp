@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "geometry/error.h"
+#include "geometry/scene.h"
 
 namespace hrs::experiments {
 
@@ -194,15 +195,9 @@ std::string reason(int err) { return err ? std::string(": ") + std::strerror(err
 }  // namespace
 
 std::string read_text(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InputError(path.string() + ": is a directory, expected a file");
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path.string() + ": cannot read file" + reason(errno));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw InputError(path.string() + ": read error" + reason(errno));
-  return text;
+  // Bounded like every input (geometry::limits::kInputBytes), with the path
+  // in the message.
+  return geometry::read_input_file(path.string());
 }
 
 void write_text_atomic(const std::filesystem::path& path, const std::string& text) {

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <iosfwd>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,8 @@ inline constexpr std::size_t kObjects = 100;     //!< most objects
 inline constexpr std::size_t kVertices = 1000;   //!< most vertices of a polygon
 inline constexpr std::size_t kRelations = 1000;  //!< most relations
 inline constexpr int kDepth = 64;                //!< deepest nesting of JSON arrays and objects
+//! Largest input file or stream: a scene, a pose or pair CSV (64 MiB).
+inline constexpr std::size_t kInputBytes = std::size_t{64} << 20;
 }  // namespace limits
 
 //! True if `p` is inside the simple polygon (even-odd crossings, doubles: for
@@ -163,6 +166,13 @@ struct Scene {
 
 //! Reads and validates a scene file. Throws InputError("FILE: /pointer: what").
 Scene load_scene(const std::string& path);
+//! The bytes of a regular file of at most limits::kInputBytes. Throws
+//! InputError naming `path` for a path with a NUL character, a directory, a
+//! device, FIFO or socket, a missing or unreadable file, or a larger one.
+std::string read_input_file(const std::string& path);
+//! A stream read to its end, at most limits::kInputBytes (InputError naming
+//! `label` beyond; it reads at most 64 KiB past the limit).
+std::string read_input_stream(std::istream& in, const std::string& label);
 //! Parses and validates scene text; `label` names the source in messages.
 Scene parse_scene(std::string_view text, const std::string& label);
 //! Writes a scene as `hrspace-scene/1` JSON text (pretty-printed).

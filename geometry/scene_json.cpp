@@ -123,11 +123,16 @@ void reject_deep_nesting(std::string_view text, const FieldReader& errors) {
 std::string one_line(std::string_view text) {
   std::string out;
   out.reserve(text.size());
-  for (char c : text) {
-    if (static_cast<unsigned char>(c) < 0x20) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c < 0x20 || c == 0x7f) {
       out += c == '\n' ? "\\n" : (c == '\t' ? "\\t" : "?");
+    } else if (c == 0xc2 && i + 1 < text.size() && static_cast<unsigned char>(text[i + 1]) >= 0x80 &&
+               static_cast<unsigned char>(text[i + 1]) <= 0x9f) {
+      out += '?';  // a C1 control (U+0080..U+009F), e.g. CSI
+      ++i;
     } else {
-      out += c;
+      out += static_cast<char>(c);
     }
   }
   return out;

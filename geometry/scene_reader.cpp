@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -21,6 +22,33 @@
 
 namespace hrs::geometry {
 namespace {
+
+//! Empty when `s` (valid UTF-8) holds only printable characters; else what
+//! the first other one is. Ids and the name go into SVG (XML 1.0 has no
+//! C0 controls but tab and newline, nor U+FFFE, U+FFFF), CSV cells and the
+//! terminal, so the reader admits no control characters there.
+std::string unprintable(std::string_view s) {
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    char hex[16];
+    if (c < 0x20 || c == 0x7f) {
+      std::snprintf(hex, sizeof hex, "U+%04X", c);
+      return std::string("the control character ") + hex;
+    }
+    if (c == 0xc2 && i + 1 < s.size()) {
+      const auto d = static_cast<unsigned char>(s[i + 1]);
+      if (d >= 0x80 && d <= 0x9f) {
+        std::snprintf(hex, sizeof hex, "U+%04X", d);
+        return std::string("the control character ") + hex;
+      }
+    }
+    if (c == 0xef && i + 2 < s.size() && static_cast<unsigned char>(s[i + 1]) == 0xbf &&
+        (static_cast<unsigned char>(s[i + 2]) & 0xfe) == 0xbe)
+      return static_cast<unsigned char>(s[i + 2]) == 0xbe ? "the non-character U+FFFE"
+                                                           : "the non-character U+FFFF";
+  }
+  return {};
+}
 
 using scene_io::child;
 using scene_io::door_edge;
@@ -69,6 +97,8 @@ class SceneReader : public scene_io::FieldReader {
     Scene scene;
     scene.name = string(require(root, "", "name"), "/name");
     if (scene.name.empty()) fail("/name", "must not be empty");
+    if (const std::string bad = unprintable(scene.name); !bad.empty())
+      fail("/name", "holds " + bad + " (names and ids are printable text)");
     scene.room = room(require(root, "", "room"), "/room");
     scene.door = door(require(root, "", "door"), "/door", scene.room);
     scene.wheelchair = wheelchair(require(root, "", "wheelchair"), "/wheelchair", scene.room);
@@ -188,6 +218,8 @@ class SceneReader : public scene_io::FieldReader {
     Object o;
     o.id = string(require(j, ptr, "id"), child(ptr, "id"));
     if (o.id.empty()) fail(child(ptr, "id"), "must not be empty");
+    if (const std::string bad = unprintable(o.id); !bad.empty())
+      fail(child(ptr, "id"), "holds " + bad + " (names and ids are printable text)");
     if (o.id == kStartNode) fail(child(ptr, "id"), "\"door\" is reserved for the start node");
     if (o.id == kComment) {
       fail(child(ptr, "id"), "\"comment\" is reserved (comment fields are ignored)");
@@ -413,17 +445,42 @@ Scene parse_scene(std::string_view text, const std::string& label) {
   }
 }
 
-Scene load_scene(const std::string& path) {
+std::string read_input_file(const std::string& path) {
+  if (path.find('\0') != std::string::npos)
+    throw InputError(one_line(path) + ": the path contains a NUL character");
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    throw InputError(one_line(path + ": is a directory, expected a scene file"));
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(status))
+    throw InputError(one_line(path + ": is a directory, expected a file"));
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(one_line(path + ": not a regular file (a device, FIFO or socket); give a file"));
+  if (std::filesystem::is_regular_file(status)) {
+    const auto size = std::filesystem::file_size(path, ec);
+    if (!ec && size > limits::kInputBytes)
+      throw InputError(one_line(path + ": " + std::to_string(size) + " bytes, more than the " +
+                                std::to_string(limits::kInputBytes >> 20) +
+                                " MiB an input file may have"));
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(one_line(path + ": cannot open file (missing or unreadable)"));
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(one_line(path + ": cannot read file"));
-  return parse_scene(buffer.str(), path);
+  return read_input_stream(in, path);
 }
+
+std::string read_input_stream(std::istream& in, const std::string& label) {
+  std::string text;
+  char chunk[1 << 16];
+  while (in) {
+    in.read(chunk, sizeof chunk);
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    if (text.size() > limits::kInputBytes)
+      throw InputError(one_line(label + ": more than the " +
+                                std::to_string(limits::kInputBytes >> 20) +
+                                " MiB an input may have"));
+  }
+  if (in.bad()) throw InputError(one_line(label + ": cannot read"));
+  return text;
+}
+
+Scene load_scene(const std::string& path) { return parse_scene(read_input_file(path), path); }
 
 }  // namespace hrs::geometry

@@ -118,17 +118,34 @@ void set_poses(PyScene& s,
   for (std::size_t i = 0; i < poses.size(); ++i) s.scene.objects[i].pose = poses[i];
 }
 
-//! Sets the path and/or interior weights from {'path': (3), 'interior': (2)}.
+//! Sets the path and/or interior weights from {'path': (3), 'interior': (2)}:
+//! any other key, a count other than 3 or 2, or a value outside
+//! [0, limits::kWeight] (NaN included) is a ValueError naming it.
 void set_weights(PyScene& s, const py::dict& d) {
   geometry::Weights w = s.scene.weights;
+  for (const auto& [key, value] : d) {
+    const std::string k = py::str(key);
+    if (k != "path" && k != "interior")
+      throw InputError("weights: unknown key '" + k + "' (expected 'path' and/or 'interior')");
+  }
+  const auto values = [&](const char* key, std::size_t n) {
+    const auto v = d[key].cast<std::vector<double>>();
+    const std::string at = std::string("weights['") + key + "']";
+    if (v.size() != n)
+      throw InputError(at + ": expected " + std::to_string(n) + " numbers, got " +
+                       std::to_string(v.size()));
+    for (std::size_t i = 0; i < n; ++i)
+      if (!(v[i] >= 0.0 && v[i] <= geometry::limits::kWeight))
+        throw InputError(at + "[" + std::to_string(i) + "]: must be within [0, 1e6], got " +
+                         (std::isnan(v[i]) ? std::string("NaN") : std::to_string(v[i])));
+    return v;
+  };
   if (d.contains("path")) {
-    const auto v = d["path"].cast<std::vector<double>>();
-    if (v.size() != 3) throw InputError("weights['path']: expected 3 numbers");
+    const auto v = values("path", 3);
     w.path = {v[0], v[1], v[2]};
   }
   if (d.contains("interior")) {
-    const auto v = d["interior"].cast<std::vector<double>>();
-    if (v.size() != 2) throw InputError("weights['interior']: expected 2 numbers");
+    const auto v = values("interior", 2);
     w.interior = {v[0], v[1]};
   }
   s.scene.weights = w;

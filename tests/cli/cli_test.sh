@@ -35,6 +35,16 @@ expect_err "missing file message" "nope.json"
 printf '' >"$tmp/empty.json"
 check "validate empty file" 2 "$bin" validate "$tmp/empty.json"
 expect_err "empty file message" "empty.json"
+# Issue 33: bounded reads. Devices and FIFOs are refused by name; stdin stops at the limit.
+check "validate /dev/zero" 2 "$bin" validate /dev/zero
+expect_err "device message" "/dev/zero: not a regular file"
+mkfifo "$tmp/fifo"
+check "validate a FIFO" 2 timeout 20 "$bin" validate "$tmp/fifo"
+expect_err "FIFO message" "fifo: not a regular file"
+check "design from endless stdin" 2 timeout 60 sh -c "\"$bin\" design - --out \"$tmp/dz\" </dev/zero"
+expect_err "stdin limit message" "stdin: more than the 64 MiB"
+check "collide poses from /dev/zero" 2 "$bin" collide "$src/scenes/bedroom.json" --poses /dev/zero
+expect_err "poses device message" "/dev/zero: not a regular file"
 printf '{"format": ' >"$tmp/broken.json"
 check "validate invalid JSON" 2 "$bin" validate "$tmp/broken.json"
 expect_err "invalid JSON message" "broken.json"

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -244,3 +245,52 @@ TEST(Hardening, LongLoopsHonourAStopRequest) {
 }
 
 }  // namespace
+
+// Issue 33 item 7: ids and the name go into SVG, CSV and the terminal, so the
+// reader refuses control characters (C0, DEL, C1) and U+FFFE/U+FFFF there.
+TEST(Hardening, ControlCharactersInIdsAndNamesAreRefused) {
+  const std::string bad[] = {std::string("bed\x1b[31m"), std::string("a\x01"), "tab\there",
+                             "del\x7f", "csi\xc2\x9b", "nc\xef\xbf\xbe", "nc\xef\xbf\xbf"};
+  for (const std::string& s : bad) {
+    json j = bedroom();
+    j["objects"][0]["id"] = s;
+    expect_refused(j, "/objects/0/id");
+    j = bedroom();
+    j["name"] = s;
+    expect_refused(j, "/name");
+  }
+  // Printable text beyond ASCII stays accepted.
+  json j = bedroom();
+  j["name"] = "chambre à coucher \xe2\x80\x94 寝室";
+  EXPECT_EQ(refusal(j), "");
+}
+
+// Issue 33 item 3: reads are bounded, special files and NUL paths refused.
+TEST(Hardening, InputsAreReadWithABound) {
+  const auto message = [](const std::string& path) {
+    try {
+      hrs::geometry::load_scene(path);
+    } catch (const hrs::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(message("/dev/zero").find("/dev/zero: not a regular file"), std::string::npos);
+  const std::string bedroom_path = std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json";
+  EXPECT_NE(message(bedroom_path + std::string(1, '\0') + "junk").find("NUL character"),
+            std::string::npos);
+  // A sparse file just over the limit is refused by its size, without reading it.
+  const std::string big = ::testing::TempDir() + "/hrspace_big_scene.json";
+  {
+    std::ofstream out(big, std::ios::binary);
+    out.seekp(static_cast<std::streamoff>(hrs::geometry::limits::kInputBytes));
+    out.put('}');
+  }
+  EXPECT_NE(message(big).find("MiB an input file may have"), std::string::npos) << message(big);
+  std::remove(big.c_str());
+  // A stream longer than the limit stops one chunk past it.
+  std::istringstream zeros(std::string(hrs::geometry::limits::kInputBytes + 1, '\0'));
+  EXPECT_THROW(hrs::geometry::read_input_stream(zeros, "stdin"), hrs::InputError);
+  std::istringstream small("{}");
+  EXPECT_EQ(hrs::geometry::read_input_stream(small, "stdin"), "{}");
+}

@@ -98,12 +98,12 @@ else
 fi
 
 # 6. Stored results that cannot be used: exit 2 naming the file.
-mkdir -p H/ao_graph/runs/ao_graph-office-s1-all.csv
-expect "directory in place of a run file" 2 "H/ao_graph/runs/ao_graph-office-s1-all.csv: is a directory" \
+mkdir -p H/ao_graph/runs/ao_graph-office-s1-all-scene.csv
+expect "directory in place of a run file" 2 "H/ao_graph/runs/ao_graph-office-s1-all-scene.csv: is a directory" \
   "$bin" experiment ao_graph "${rooms[@]}" a/office.json --out H
 expect "two seeds" 0 "" "$bin" experiment ao_graph --seeds 2 --iterations 2 --rooms a/office.json --out I
-cp I/ao_graph/runs/ao_graph-office-s1-all.csv I/ao_graph/runs/ao_graph-office-s2-all.csv
-expect "key cell not the file name" 2 "ao_graph-office-s2-all.csv: key cell 'ao_graph-office-s1-all'" \
+cp I/ao_graph/runs/ao_graph-office-s1-all-scene.csv I/ao_graph/runs/ao_graph-office-s2-all-scene.csv
+expect "key cell not the file name" 2 "ao_graph-office-s2-all-scene.csv: key cell 'ao_graph-office-s1-all-scene'" \
   "$bin" experiment ao_graph --seeds 2 --iterations 2 --rooms a/office.json --out I
 
 # 7. merge: shards that differ in anything but --shard are refused.

@@ -136,3 +136,25 @@ def test_furniture_flush_with_a_wall_is_valid_and_past_it_is_not():
 def test_version_is_the_commands():
     assert hrspace.__version__.count(".") == 2
     assert all(part.isdigit() for part in hrspace.__version__.split("."))
+
+
+def test_special_files_and_nul_paths_are_value_errors():
+    """Issue 33: reads are bounded; a device or a path with a NUL is refused."""
+    with pytest.raises(ValueError, match="not a regular file"):
+        hrspace.Scene("/dev/zero")
+    with pytest.raises(ValueError, match="NUL character"):
+        hrspace.Scene(str(BEDROOM) + "\0junk")
+
+
+def test_weights_setter_refuses_unknown_keys_and_nan():
+    s = hrspace.Scene(BEDROOM)
+    before = s.weights
+    with pytest.raises(ValueError, match="unknown key 'pathh'"):
+        s.weights = {"pathh": (1, 1, 1)}
+    with pytest.raises(ValueError, match=r"weights\['path'\]\[1\].*got NaN"):
+        s.weights = {"path": (1, float("nan"), 1)}
+    with pytest.raises(ValueError, match="expected 2 numbers"):
+        s.weights = {"interior": (1,)}
+    assert s.weights == before
+    s.weights = {"path": (1, 2, 3)}
+    assert s.weights["path"] == (1.0, 2.0, 3.0)
