@@ -21,6 +21,7 @@
 #include "experiments/study.h"
 #include "geometry/error.h"
 #include "geometry/scene.h"
+#include "optimize/design_io.h"
 
 namespace hrs::cli {
 
@@ -189,6 +190,13 @@ std::pair<int, int> shard_option(const Args& args) {
   return {static_cast<int>(n[0]), static_cast<int>(n[1])};
 }
 
+//! Creates the output root (OutputError, exit 1, when it cannot be made).
+void create_out(const std::filesystem::path& out) {
+  std::error_code ec;
+  std::filesystem::create_directories(out, ec);
+  if (ec) throw OutputError(out.string() + ": cannot create directory: " + ec.message());
+}
+
 //! `experiment merge STUDY|all --out DIR SHARD_DIR...`.
 int merge_command(const Args& args, const experiments::StudyConfig& config) {
   std::vector<std::filesystem::path> shards;
@@ -197,6 +205,8 @@ int merge_command(const Args& args, const experiments::StudyConfig& config) {
       throw InputError(args.positional()[i] + ": not a directory");
     shards.emplace_back(args.positional()[i]);
   }
+  create_out(config.out);
+  const optimize::DirectoryLock lock(config.out);
   int missing = 0;
   for (const experiments::Study* s : select(args.positional()[1])) {
     const int m = experiments::merge_shards(*s, config, shards);
@@ -224,6 +234,9 @@ int run_command(const Args& args, const experiments::StudyConfig& config) {
   options.stop = &g_stop;
   const std::vector<const experiments::Study*> chosen = select(args.positional()[0]);
   check_scenes(chosen, config);
+  // One writer per output root: a second sweep into it is refused.
+  create_out(config.out);
+  const optimize::DirectoryLock lock(config.out);
 
   g_stop.store(false);
   struct sigaction action {};

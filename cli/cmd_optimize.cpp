@@ -317,6 +317,8 @@ int cmd_design(const Argv& argv) {
   }
   const DesignRequest request = design_request(args);
   const geometry::Scene scene = prepare_design(request, args);
+  // One writer per --out: a second design into it is refused, not mixed in.
+  const optimize::DirectoryLock lock(request.out);
   StopSignalHandlers handlers;
   handlers.install();
   const bool tty = isatty(STDERR_FILENO) != 0;

@@ -6,6 +6,7 @@
 #include "optimize/preferences_json.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -104,6 +105,25 @@ void write_files_atomic(const std::vector<std::pair<std::filesystem::path, std::
   }
 }
 
+DirectoryLock::DirectoryLock(const std::filesystem::path& dir) {
+  const std::filesystem::path path = dir / ".hrspace.lock";
+  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) throw OutputError(path.string() + ": cannot create lock file: " + std::strerror(errno));
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(fd_);
+    fd_ = -1;
+    if (err == EWOULDBLOCK)
+      throw InputError(dir.string() + ": in use by another hrspace run (it holds " + path.string() +
+                       "); wait for it to end or choose another --out");
+    throw OutputError(path.string() + ": cannot lock: " + std::strerror(err));
+  }
+}
+
+DirectoryLock::~DirectoryLock() {
+  if (fd_ >= 0) ::close(fd_);  // closing releases the flock
+}
+
 void require_writable_directory(const std::filesystem::path& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
@@ -122,7 +142,7 @@ void require_writable_directory(const std::filesystem::path& dir) {
 
 const std::vector<std::string>& design_file_names() {
   static const std::vector<std::string> names{"layout.json", "tours.json", "design.svg",
-                                              "report.json"};
+                                              "report.json", "manifest.json"};
   return names;
 }
 
@@ -292,10 +312,26 @@ void write_design(const DesignResult& result, const RunInfo& info,
   if (ec) throw InputError(dir.string() + ": cannot create directory: " + ec.message());
   const std::string title = result.layout.name + " — seed " + std::to_string(info.seed) +
                             (result.valid ? "" : " (NOT VALID)");
-  write_files_atomic({{dir / "layout.json", geometry::write_scene(result.layout)},
-                      {dir / "tours.json", tours_document(result)},
-                      {dir / "design.svg", design_svg(result, title)},
-                      {dir / "report.json", report_document(result, info)}});
+  const std::vector<std::pair<std::filesystem::path, std::string>> files = {
+      {dir / "layout.json", geometry::write_scene(result.layout)},
+      {dir / "tours.json", tours_document(result)},
+      {dir / "design.svg", design_svg(result, title)},
+      {dir / "report.json", report_document(result, info)}};
+  // The set is marked complete by the manifest, written last: a reader that
+  // finds no manifest, or one that does not match, knows a write was cut.
+  std::filesystem::remove(dir / "manifest.json", ec);
+  if (ec) throw OutputError((dir / "manifest.json").string() + ": cannot remove: " + ec.message());
+  write_files_atomic(files);
+  json manifest = {{"format", "hrspace-design-manifest/1"}, {"files", json::array()}};
+  for (const auto& [path, text] : files) {
+    std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit
+    for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+    manifest["files"].push_back(
+        {{"name", path.filename().string()}, {"bytes", text.size()}, {"fnv1a64", hex}});
+  }
+  write_files_atomic({{dir / "manifest.json", manifest.dump(1) + "\n"}});
 }
 
 }  // namespace hrs::optimize

@@ -35,13 +35,17 @@ std::string design_svg(const DesignResult& result, const std::string& title);
 //! One SVG showing several design.svg texts side by side (columns per row).
 std::string contact_sheet_svg(const std::vector<std::string>& svgs, int columns = 4);
 //! Writes layout.json, tours.json, design.svg and report.json into `dir`
-//! (created if missing), all four through write_files_atomic. Throws
+//! (created if missing), all four through write_files_atomic, then
+//! manifest.json: the four names with their sizes and FNV-1a digests. The
+//! old manifest is removed first, so the files are one set exactly when
+//! manifest.json exists and matches them (a kill between two renames
+//! leaves no manifest). Throws
 //! InputError when the directory cannot be created, OutputError when a write
 //! fails.
 void write_design(const DesignResult& result, const RunInfo& info,
                   const std::filesystem::path& dir);
 
-//! The names write_design writes into a design directory.
+//! The names write_design writes into a design directory (manifest.json last).
 const std::vector<std::string>& design_file_names();
 
 //! Writes each (path, text) to a temporary file in the path's directory,
@@ -49,6 +53,20 @@ const std::vector<std::string>& design_file_names();
 //! place: a kill or a full disk leaves the old files or the new ones, never a
 //! truncated file. Throws OutputError (the temporary files are removed).
 void write_files_atomic(const std::vector<std::pair<std::filesystem::path, std::string>>& files);
+
+//! An advisory lock (flock) on DIR/.hrspace.lock, held while it lives: one
+//! writer per output directory. A second `hrspace design` or `experiment`
+//! into the same DIR gets InputError (exit 2) naming DIR, at once.
+class DirectoryLock {
+ public:
+  explicit DirectoryLock(const std::filesystem::path& dir);
+  ~DirectoryLock();
+  DirectoryLock(const DirectoryLock&) = delete;
+  DirectoryLock& operator=(const DirectoryLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
 
 //! Creates `dir` if missing and checks that a file can be created in it;
 //! InputError naming the directory otherwise. For --out, before any work.

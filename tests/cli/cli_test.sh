@@ -188,6 +188,28 @@ expect_err "design unknown preset named" "--planner: unknown planner preset 'fas
 check "design technique on the RRT" 2 "$bin" design "$bed" --out "$tmp/dp" --iterations 1 --planner baseline,trees
 expect_err "design technique on the RRT named" "'trees': the baseline preset plans each leg with the RRT"
 check "design preset with items" 0 "$bin" design "$bed" --out "$tmp/dp" --iterations 2 --planner literal,goalskip
+# Issue 33: the set of files is marked by manifest.json (written last), and
+# a second writer into one --out is refused while the first holds its lock.
+/usr/bin/python3 - "$tmp/dp" <<'PY' || { echo "FAIL manifest"; fails=$((fails+1)); }
+import json, os, sys
+d = sys.argv[1]
+m = json.load(open(os.path.join(d, "manifest.json")))
+names = sorted(f["name"] for f in m["files"])
+assert names == ["design.svg", "layout.json", "report.json", "tours.json"], names
+for f in m["files"]:
+    data = open(os.path.join(d, f["name"]), "rb").read()
+    h = 14695981039346656037
+    for c in data:
+        h = ((h ^ c) * 1099511628211) % (1 << 64)
+    assert len(data) == f["bytes"] and f"{h:016x}" == f["fnv1a64"], f
+print("ok   manifest matches the files")
+PY
+mkdir -p "$tmp/locked"
+check "design into a locked --out" 2 sh -c "( flock 9; \"$bin\" design \"$bed\" --out \"$tmp/locked\" --iterations 1 ) 9>\"$tmp/locked/.hrspace.lock\""
+expect_err "locked --out message" "locked: in use by another hrspace run"
+check "experiment into a locked --out" 2 sh -c "( flock 9; \"$bin\" experiment method --quick --out \"$tmp/locked\" ) 9>\"$tmp/locked/.hrspace.lock\""
+expect_err "locked experiment message" "locked: in use by another hrspace run"
+check "design after the lock is released" 0 "$bin" design "$bed" --out "$tmp/locked" --iterations 1
 grep -q '"planner": "literal,goalskip"' "$tmp/dp/report.json" || { echo "FAIL: report.json planner name"; fails=$((fails+1)); }
 check "design default preset" 0 "$bin" design "$bed" --out "$tmp/dd" --iterations 2
 grep -q '"planner": "default"' "$tmp/dd/report.json" || { echo "FAIL: default planner not in report.json"; fails=$((fails+1)); }

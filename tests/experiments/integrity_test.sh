@@ -85,7 +85,7 @@ expect "--rooms missing" 2 "nope.json" "$bin" experiment ao_graph --rooms nope.j
 
 # 5. Output errors: exit 1 with the path and the system's reason.
 : >afile
-expect "--out under a file" 1 "afile/sub/ao_graph: cannot create directory: Not a directory" \
+expect "--out under a file" 1 "afile/sub: cannot create directory: Not a directory" \
   "$bin" experiment ao_graph "${rooms[@]}" a/office.json --out afile/sub
 mkdir -p full
 if mount -t tmpfs -o size=64k tmpfs full 2>/dev/null; then
