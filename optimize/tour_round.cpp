@@ -33,6 +33,11 @@ TourRound::TourRound(const geometry::Scene& scene, const DesignOptions& options,
   if (!reuse_ && options.planner.refuse) hooks.gate = &gate_;
   hooks.cancel = &cancel_;
   hooks.stop = stop;
+  // The objects' goal poses in their own frames, once for all M planners.
+  auto local_goals = std::make_shared<std::vector<std::vector<planning::GoalPose>>>();
+  for (const geometry::Object& o : work_.objects)
+    local_goals->push_back(planning::local_goal_poses(work_, o, tour.goals, stop));
+  hooks.local_goals = std::move(local_goals);
   for (std::size_t k = 0; k < sequences.size(); ++k) {
     hooks.tour = static_cast<int>(k);
     planners_.push_back(std::make_unique<planning::TourPlanner>(

@@ -42,8 +42,14 @@ TourPlanner::TourPlanner(const geometry::Scene& scene, const CSpace& cspace, Tou
       hooks_(hooks),
       planner_(scene, cspace, options.planner, hooks.planner),
       validator_(cspace, scene.wheelchair.turning_radius) {
+  if (hooks.local_goals) {
+    local_goals_ = hooks.local_goals;
+    return;
+  }
+  auto goals = std::make_shared<std::vector<std::vector<GoalPose>>>();
   for (const geometry::Object& o : scene.objects)
-    local_goals_.push_back(local_goal_poses(scene, o, options_.goals, hooks.stop));
+    goals->push_back(local_goal_poses(scene, o, options_.goals, hooks.stop));
+  local_goals_ = std::move(goals);
 }
 
 std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {
@@ -54,7 +60,7 @@ std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {
   }
   const int index = scene_->find_object(id);
   if (index < 0) throw InputError("unknown object id '" + std::string(id) + "' in sequence");
-  return place_goal_poses(local_goals_[index], cspace_->object_pose(index), *cspace_);
+  return place_goal_poses((*local_goals_)[index], cspace_->object_pose(index), *cspace_);
 }
 
 Tour TourPlanner::plan(const std::vector<std::string>& sequence) {

@@ -87,7 +87,7 @@ class TourPlanner {
   MotionValidator validator_;
   //! local_goal_poses() of every object, computed once (they do not depend
   //! on where the object stands).
-  std::vector<std::vector<GoalPose>> local_goals_;
+  std::shared_ptr<const std::vector<std::vector<GoalPose>>> local_goals_;
 };
 
 //! The RRT seed of one leg: a hash of the tour seed and the key.

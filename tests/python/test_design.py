@@ -9,7 +9,7 @@ import pytest
 import hrspace
 from conftest import BEDROOM, SOURCE_DIR, cli_error, drop_timings, run_cli
 
-FILES = ["layout.json", "tours.json", "design.svg", "report.json"]
+FILES = ["layout.json", "tours.json", "design.svg", "report.json", "manifest.json"]
 
 
 def compare_with_command(tmp_path, scene_path, seed, iterations, planner, threads):
