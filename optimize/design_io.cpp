@@ -301,6 +301,7 @@ json reuse_json(const DesignResult& result) {
 std::string report_document(const DesignResult& result, const RunInfo& info) {
   json r = run_report_json(result, info);
   if (result.proposed) r["reuse"] = reuse_json(result);
+  for (const auto& [name, text] : info.report_sections) r[name] = json::parse(text);
   return r.dump(1) + "\n";
 }
 
@@ -315,7 +316,7 @@ void write_design(const DesignResult& result, const RunInfo& info,
   const std::vector<std::pair<std::filesystem::path, std::string>> files = {
       {dir / "layout.json", geometry::write_scene(result.layout)},
       {dir / "tours.json", tours_document(result)},
-      {dir / "design.svg", design_svg(result, title)},
+      {dir / "design.svg", design_svg(result, title, info.svg_overlay)},
       {dir / "report.json", report_document(result, info)}};
   // The set is marked complete by the manifest, written last: a reader that
   // finds no manifest, or one that does not match, knows a write was cut.

@@ -23,6 +23,12 @@ struct RunInfo {
   std::uint64_t seed = 1;
   std::string planner = "baseline";
   int iterations = 700;
+  //! Further top-level sections of report.json: (name, JSON text), written
+  //! after the design's own (e.g. the accessibility summary of the front end).
+  std::vector<std::pair<std::string, std::string>> report_sections = {};
+  //! SVG elements in room coordinates (metres, y up), drawn in design.svg
+  //! above the tours (e.g. the accessibility overlay).
+  std::string svg_overlay = {};
 };
 
 //! tours.json text: {"tours": [...]} with sequence, likelihood, found, legs
@@ -30,8 +36,10 @@ struct RunInfo {
 std::string tours_document(const DesignResult& result);
 //! report.json text.
 std::string report_document(const DesignResult& result, const RunInfo& info);
-//! design.svg text; `title` is printed above the room.
-std::string design_svg(const DesignResult& result, const std::string& title);
+//! design.svg text; `title` is printed above the room; `overlay` (SVG
+//! elements in room coordinates, metres, y up) is drawn above the tours.
+std::string design_svg(const DesignResult& result, const std::string& title,
+                       const std::string& overlay = {});
 //! One SVG showing several design.svg texts side by side (columns per row).
 std::string contact_sheet_svg(const std::vector<std::string>& svgs, int columns = 4);
 //! Writes layout.json, tours.json, design.svg and report.json into `dir`

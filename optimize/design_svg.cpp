@@ -217,7 +217,8 @@ void legend(std::ostringstream& s, const Canvas& canvas, const DesignResult& res
 
 }  // namespace
 
-std::string design_svg(const DesignResult& result, const std::string& title) {
+std::string design_svg(const DesignResult& result, const std::string& title,
+                       const std::string& overlay) {
   const auto& scene = result.layout;
   const Canvas canvas = room_canvas(scene);
   const Frame& f = canvas.frame;
@@ -228,6 +229,12 @@ std::string design_svg(const DesignResult& result, const std::string& title) {
   objects_layer(s, f, scene);
   preferences_layer(s, f, scene, result.preferences);
   tours_layer(s, f, result.tours);
+  if (!overlay.empty()) {
+    // Room coordinates (metres, y up) mapped like every other layer.
+    s << "<g class=\"overlay\" transform=\"matrix(" << num(f.scale) << " 0 0 " << num(-f.scale)
+      << " " << num(f.left - f.xmin * f.scale) << " " << num(f.top + f.ymax * f.scale) << ")\">\n"
+      << overlay << "</g>\n";
+  }
   start_chair_layer(s, f, scene);
   legend(s, canvas, result);
   s << "</svg>\n";

@@ -17,8 +17,9 @@ fi
 /usr/bin/python3 - "$tmp/q" <<'PY' || fails=$((fails + 1))
 import csv, os, sys
 root = sys.argv[1]
-studies = ["timing", "rs_decomposition", "rrt_iterations", "small_room", "ao_graph", "designs", "method",
-           "generalization"]
+studies = [line.split()[0] for line in os.popen(os.environ["HRSPACE_BIN"] + " experiment list")
+           if line.strip()]
+assert len(studies) >= 11, studies
 bad = []
 for s in studies:
     for f in ("runs.csv", "summary.csv"):
@@ -34,6 +35,22 @@ for s in studies:
                 for col in ("study", "key", "commit", "cpu", "threads"):
                     if not r.get(col):
                         bad.append(f"{p}: row {r.get('key')} lacks {col}")
+        else:
+            for r in rows:
+                if not r.get("commit"):
+                    bad.append(f"{p}: summary row lacks its commit")
+# The tables the studies add beside runs.csv.
+for table in ("timing/trace.csv", "rrt_iterations/histogram.csv", "rs_decomposition/samples.csv"):
+    if not os.path.exists(os.path.join(root, table)):
+        bad.append(f"{table}: missing")
+regions = [r for r in csv.DictReader(open(os.path.join(root, "rs_decomposition", "runs.csv")))
+           if r.get("kind") == "regions"]
+if not regions or not all(float(r.get("lookup_ns_far") or 0) > 0 and float(r.get("exact_ns_far") or 0) > 0
+                          for r in regions):
+    bad.append("rs_decomposition: regions runs lack the look-up cost")
+alphas = {r.get("alpha") for r in csv.DictReader(open(os.path.join(root, "ao_graph", "runs.csv")))}
+if alphas != {"scene", "uniform"}:
+    bad.append(f"ao_graph: alpha arms {alphas}, expected scene and uniform")
 figures = ["timing", "rs_partition", "rs_decomposition_time", "rrt_iterations", "rrt_threshold",
            "small_room_time", "small_room_designs", "ao_graph_designs", "designs_cover",
            "fig1_weights", "ao_graphs", "goal_poses", "generalization"]
