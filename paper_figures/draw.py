@@ -68,9 +68,38 @@ def unreachable_objects(tours):
     return sorted(wanted - reached)
 
 
-def draw_design(ax, design_dir, title=None, all_tours=False, mark_unreachable=True):
-    """Draws a design directory: room, door, objects, the most likely found
-    tour (bold) and, with all_tours, the other found tours (faint)."""
+def chair_outline(pose, length, width):
+    """World corners of the chair's length x width rectangle centred on `pose`."""
+    x, y, t = pose
+    c, s = math.cos(t), math.sin(t)
+    local = [(length / 2, width / 2), (-length / 2, width / 2), (-length / 2, -width / 2),
+             (length / 2, -width / 2)]
+    return [(x + c * px - s * py, y + s * px + c * py) for px, py in local]
+
+
+def front_edge(obj):
+    """The object's front (local +x side) as a segment in world coordinates,
+    for rectangles; for polygons the extent of the footprint along +x."""
+    x, y, t = obj["pose"]
+    if "size" in obj:
+        d, w = obj["size"]
+        ends = [(d / 2, w / 2), (d / 2, -w / 2)]
+    else:
+        pts = obj["polygon"]
+        xmax = max(p[0] for p in pts)
+        ys = [p[1] for p in pts if abs(p[0] - xmax) < 1e-9] or [0.0]
+        ends = [(xmax, min(ys)), (xmax, max(ys))] if len(ys) > 1 else [(xmax, -0.1), (xmax, 0.1)]
+    c, s = math.cos(t), math.sin(t)
+    return [(x + c * px - s * py, y + s * px + c * py) for px, py in ends]
+
+
+def draw_design(ax, design_dir, title=None, all_tours=False, mark_unreachable=True,
+                footprints=True, every=0.35):
+    """Draws a design directory as the paper draws its designs: room, door,
+    objects with their fronts marked (thick dark edge), unreachable stops
+    flagged, the most likely found tour (bold) with the wheelchair's
+    footprint every `every` metres along it, and with all_tours the other
+    found tours (faint)."""
     with open(os.path.join(design_dir, "layout.json")) as f:
         scene = json.load(f)
     tours = []
@@ -101,6 +130,8 @@ def draw_design(ax, design_dir, title=None, all_tours=False, mark_unreachable=Tr
                 ls="--" if hit else "-",
             )
         )
+        (fx0, fy0), (fx1, fy1) = front_edge(obj)
+        ax.plot([fx0, fx1], [fy0, fy1], color="#1f3b57", lw=2.2, solid_capstyle="butt")
         x, y, _ = obj["pose"]
         label = obj["id"] + (" (unreachable)" if hit else "")
         ax.text(x, y, label, ha="center", va="center", fontsize=6)
@@ -111,9 +142,22 @@ def draw_design(ax, design_dir, title=None, all_tours=False, mark_unreachable=Tr
                 wp = leg["waypoints"]
                 ax.plot([p[0] for p in wp], [p[1] for p in wp], color="tab:red", lw=0.5, alpha=0.25)
     if tours and tours[0]["found"]:
+        chair = scene["wheelchair"]
+        along, last = 0.0, None
         for leg in tours[0]["legs"]:
             wp = leg["waypoints"]
             ax.plot([p[0] for p in wp], [p[1] for p in wp], color="tab:red", lw=1.6)
+            if not footprints:
+                continue
+            for p in wp:
+                if last is not None:
+                    along += math.hypot(p[0] - last[0], p[1] - last[1])
+                if last is None or along >= every:
+                    ax.add_patch(PolygonPatch(chair_outline(p, chair["length"], chair["width"]),
+                                              closed=True, fill=False, ec="tab:red", lw=0.4,
+                                              alpha=0.55))
+                    along = 0.0
+                last = p
     xs = [p[0] for p in room]
     ys = [p[1] for p in room]
     ax.set_xlim(min(xs) - 0.2, max(xs) + 0.2)

@@ -15,6 +15,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 usage() {
   cat <<'USAGE'
 usage: scripts/reproduce.sh [--quick] [--out DIR] [--jobs N] [--publish] [STUDY ...]
+       scripts/reproduce.sh --status
 
 Runs the studies of the experiments harness (default: all of them) into DIR
 (default out/reproduce, with --quick out/reproduce-quick), then draws the
@@ -28,6 +29,9 @@ other options, scenes or code is refused (exit 2), never mixed in.
   --jobs N     designs run at once, one thread each (default 1)
   --publish    also copy the figures, summaries and REPRODUCTION.md into
                paper_figures/ (what README and docs embed)
+  --status     only say whether paper_figures/ is current: "current" (exit 0) when
+               the code under geometry/, rs/, planning/ and optimize/ at the
+               commit it was made from equals HEAD's, else "stale" (exit 1)
   STUDY ...    timing rs_decomposition rrt_iterations sensitivity small_room ao_graph designs
                hard_rooms design_loop method generalization
 
@@ -45,6 +49,7 @@ while [ $# -gt 0 ]; do
     -h|--help) usage; exit 0 ;;
     --quick) quick=(--quick) ;;
     --publish) publish=(--publish) ;;
+    --status) status_only=1 ;;
     --out) [ $# -ge 2 ] && [ -n "$2" ] || { echo "reproduce.sh: --out needs a directory" >&2; exit 2; }; out="$2"; shift ;;
     --out=*) out="${1#--out=}"; [ -n "$out" ] || { echo "reproduce.sh: --out needs a directory" >&2; exit 2; } ;;
     --jobs) [ $# -ge 2 ] || { echo "reproduce.sh: --jobs needs a number" >&2; exit 2; }; jobs="$2"; shift ;;
@@ -54,6 +59,25 @@ while [ $# -gt 0 ]; do
   esac
   shift
 done
+if [ "${status_only:-0}" = 1 ]; then
+  # The published results are current when the code that decides them is
+  # HEAD's: the commit they were made from (REPRODUCTION.md's "Code: commit")
+  # has the same geometry/, rs/, planning/ and optimize/ as HEAD.
+  made=$(grep -o 'Code: commit `[^`]*`' "$root/paper_figures/REPRODUCTION.md" 2>/dev/null | head -1 |
+         sed 's/.*`\(.*\)`/\1/')
+  if [ -z "$made" ]; then echo "reproduce.sh: stale: paper_figures/REPRODUCTION.md names no commit"; exit 1; fi
+  case "$made" in *-dirty) echo "reproduce.sh: stale: published from a tree with uncommitted changes ($made)"; exit 1 ;; esac
+  if ! git -C "$root" cat-file -e "$made^{commit}" 2>/dev/null; then
+    echo "reproduce.sh: stale: commit $made is not in this repository"; exit 1
+  fi
+  changed=$(git -C "$root" diff --name-only "$made" HEAD -- geometry rs planning optimize | wc -l)
+  if [ "$changed" = 0 ]; then
+    echo "reproduce.sh: current: paper_figures/ was made at $made; geometry/, rs/, planning/ and optimize/ are unchanged since"
+    exit 0
+  fi
+  echo "reproduce.sh: stale: $changed file(s) under geometry/, rs/, planning/, optimize/ changed since $made (run scripts/reproduce.sh --jobs 2 --publish)"
+  exit 1
+fi
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "reproduce.sh: --jobs '$jobs': expected a whole number >= 1" >&2; exit 2; }
 [ ${#studies[@]} -gt 0 ] || studies=(all)
 if [ -z "$out" ]; then

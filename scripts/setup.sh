@@ -7,7 +7,7 @@ packages=(
   g++ cmake ninja-build ccache pkg-config doxygen
   libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libompl-dev
-  python3 python3-matplotlib
+  python3 python3-matplotlib linux-perf
   pybind11-dev python3-dev python3-numpy python3-pytest
   slurm-wlm slurm-client munge
 )

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# scripts/reproduce.sh --status in a scratch repository: "current" while
+# geometry/, rs/, planning/ and optimize/ equal those of the commit that
+# REPRODUCTION.md names, "stale" after a change there, "current" again for
+# changes elsewhere; a dirty or unknown commit is stale.
+# Usage: status_test.sh SOURCE_DIR
+set -u
+src="$1"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+fails=0
+expect() {  # expect NAME STATUS PATTERN
+  local out; out=$("$tmp/r/scripts/reproduce.sh" --status 2>&1); local got=$?
+  if [ "$got" != "$2" ] || ! grep -q -- "$3" <<<"$out"; then
+    echo "FAIL $1: exit $got, '$out'"; fails=$((fails + 1))
+  else
+    echo "ok   $1"
+  fi
+}
+cd "$tmp" && git init -q r && cd r || exit 1
+git config user.email t@example.org; git config user.name test
+mkdir -p scripts paper_figures geometry optimize docs
+cp "$src/scripts/reproduce.sh" scripts/
+echo a >geometry/a.cpp; echo b >optimize/b.cpp; echo d >docs/d.md
+git add -A && git commit -qm base
+made=$(git rev-parse --short=12 HEAD)
+printf 'Command: x. Code: commit `%s`; machine: y.\n' "$made" >paper_figures/REPRODUCTION.md
+git add -A && git commit -qm publish
+expect "published at an ancestor with the same code" 0 "current: paper_figures/ was made at $made"
+echo more >>docs/d.md && git commit -qam docs
+expect "a change outside the code keeps it current" 0 "current"
+echo more >>optimize/b.cpp && git commit -qam code
+expect "a change under optimize/ makes it stale" 1 "stale: 1 file(s)"
+printf 'Code: commit `%s-dirty`;\n' "$made" >paper_figures/REPRODUCTION.md
+expect "a dirty tree is stale" 1 "uncommitted changes"
+printf 'Code: commit `0123456789ab`;\n' >paper_figures/REPRODUCTION.md
+expect "an unknown commit is stale" 1 "not in this repository"
+echo "$fails failure(s)"
+[ "$fails" = 0 ]
