@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "api/operations.h"
 
+#include <cstdio>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
+#include "access/accessibility.h"
 #include "api/reuse_list.h"
 #include "geometry/error.h"
 #include "geometry/free_grid.h"
@@ -172,6 +174,31 @@ optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int t
   options.threads = threads;
   options.planner = planner;
   return options;
+}
+
+std::string attach_accessibility(const optimize::DesignResult& result, const std::string& rules,
+                                 optimize::RunInfo& info, std::string* line) {
+  const access::Report report =
+      access::evaluate(result.layout, result.tours, access::Rules::named(rules));
+  const std::string text = access::report_json(report);
+  std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit, as manifest.json
+  for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  std::string summary = access::summary_json(report);
+  summary.pop_back();  // the closing brace
+  summary += ",\"file\":\"accessibility.json\",\"fnv1a64\":\"" + std::string(hex) + "\"}";
+  info.report_sections.emplace_back("accessibility", summary);
+  info.svg_overlay = access::svg_overlay(report, result.layout);
+  if (line) *line = access::summary_line(report);
+  return text;
+}
+
+void write_design_files(const optimize::DesignResult& result, const optimize::RunInfo& info,
+                        const std::string& accessibility_json, const std::filesystem::path& dir) {
+  optimize::require_writable_directory(dir);
+  optimize::write_files_atomic({{dir / "accessibility.json", accessibility_json}});
+  optimize::write_design(result, info, dir);
 }
 
 }  // namespace hrs::api

@@ -6,6 +6,7 @@
 // error messages (hrs::InputError, one line) whichever front end is used.
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
+#include "optimize/design_io.h"
 #include "planning/reuse_options.h"
 
 namespace hrs::api {
@@ -87,5 +89,19 @@ optimize::PlannerConfig design_planner(const std::string& planner,
 //! planner); python_design_test checks that both give the same files.
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
                                        const optimize::PlannerConfig& planner);
+
+//! The accessibility report (access/accessibility.h) of a finished design
+//! under rule set `rules` ("ada" or "iso"; InputError otherwise): adds its
+//! summary to `info` (report.json section "accessibility", design.svg's
+//! overlay) and returns accessibility.json's text; `line` (may be null)
+//! gets the one-line summary for stdout. The CLI and Python call this, so
+//! their files stay byte-identical.
+std::string attach_accessibility(const optimize::DesignResult& result, const std::string& rules,
+                                 optimize::RunInfo& info, std::string* line = nullptr);
+//! accessibility.json (atomically), then the design's own files and
+//! manifest (optimize::write_design); report.json pins accessibility.json
+//! by its FNV-1a digest.
+void write_design_files(const optimize::DesignResult& result, const optimize::RunInfo& info,
+                        const std::string& accessibility_json, const std::filesystem::path& dir);
 
 }  // namespace hrs::api

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "access/accessibility.h"
 #include "api/operations.h"
 #include "cli/args.h"
 #include "cli/commands.h"
@@ -73,7 +74,8 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
     if (multi && k >= 1 && k <= keep && name == std::to_string(k)) continue;
     for (const auto& inner : fs::directory_iterator(entry.path(), ec)) {
       const std::string f = inner.path().filename().string();
-      if (std::find(names.begin(), names.end(), f) == names.end() && f.rfind(".", 0) != 0) {
+      if (std::find(names.begin(), names.end(), f) == names.end() && f != "accessibility.json" &&
+          f.rfind(".", 0) != 0) {
         throw InputError(entry.path().string() + ": holds " + f +
                          ", not an output of hrspace design; remove it or choose another --out");
       }
@@ -83,6 +85,7 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
   if (multi) {
     for (const auto& n : names)
       if (fs::exists(out / n, ec)) stale.push_back(out / n);
+    if (fs::exists(out / "accessibility.json", ec)) stale.push_back(out / "accessibility.json");
   } else if (fs::exists(out / "contact_sheet.svg", ec)) {
     stale.push_back(out / "contact_sheet.svg");
   }
@@ -117,6 +120,8 @@ constexpr const char* kDesignUsageHead =
 constexpr const char* kDesignUsageTail =
     "  --reuse LIST    replaces the proposed planner's techniques: all, none or a comma list\n"
     "  --disable LIST  turns design-loop switches off: none or a comma list (ablations)\n"
+    "  --rules R       accessibility rule set of accessibility.json: ada (default; 2010 ADA\n"
+    "                  Standards) or iso (ISO 21542's 1500 mm turning circle, else ADA)\n"
 "DIR is created and checked writable before any work. Each file is written to a\n"
     "temporary file and renamed into place once all of a design's files are written.\n"
     "Outputs of an earlier run that this run does not rewrite (numbered design\n"
@@ -187,6 +192,7 @@ struct DesignRequest {
   std::string out;
   optimize::PlannerConfig planner;  //!< --planner, --reuse and --disable
   long seed = 1, iterations = 700, designs = 1, threads = 0;
+  std::string rules = "ada";  //!< --rules: the accessibility rule set
 };
 
 //! The command's arguments, checked in this order (the first bad one is reported).
@@ -201,6 +207,8 @@ DesignRequest design_request(const Args& args) {
   r.seed = args.integer("seed", 1, 0, 1L << 53);
   r.iterations = args.integer("iterations", 700, 0, 100000000);
   r.designs = args.integer("designs", 1, 1, 1000);
+  r.rules = args.get_or("rules", "ada");
+  (void)access::Rules::named(r.rules);  // refused here, before any work
   r.threads = args.integer("threads", 0, 0, 1024);
   r.scene_path = args.positional()[0];
   return r;
@@ -283,10 +291,13 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   if (tty) std::cerr << "\r\033[K" << std::flush;
   const std::filesystem::path dir = design_dir(r, d);
   optimize::RunInfo info{options.seed, r.planner.name(), static_cast<int>(r.iterations)};
-  optimize::write_design(result, info, dir);
+  std::string access_line;
+  const std::string access_json = api::attach_accessibility(result, r.rules, info, &access_line);
+  api::write_design_files(result, info, access_json, dir);
   svgs.push_back(
       optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
   print_summary(dir, result);
+  std::printf("%s: %s\n", dir.string().c_str(), access_line.c_str());
   return result.stopped || g_interrupted.load();
 }
 
@@ -309,7 +320,7 @@ void finish_outputs(const DesignRequest& r, const std::vector<std::string>& svgs
 
 int cmd_design(const Argv& argv) {
   const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
-                         "weights", "disable"});
+                         "weights", "disable", "rules"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsageHead << optimize::PlannerConfig::help()
               << kDesignUsageTail;

@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 
+#include "access/accessibility.h"
 #include "api/operations.h"
 #include "geometry/error.h"
 #include "optimize/design.h"
@@ -34,6 +35,7 @@ namespace {
 struct PyDesign {
   optimize::DesignResult result;
   optimize::RunInfo info;
+  std::string accessibility;  //!< accessibility.json's text
   std::string label;
   py::object tours, report;  //!< parsed once
 };
@@ -68,8 +70,9 @@ py::dict step_dict(const optimize::DesignStep& s, const geometry::Scene& scene, 
 py::object run_design(const PyScene& scene, long long seed, long long iterations,
                       const std::string& planner, const std::optional<std::string>& reuse,
                       const std::optional<std::string>& disable, long long threads,
-                      const py::object& progress) {
+                      const std::string& rules, const py::object& progress) {
   scene.validate();
+  (void)access::Rules::named(rules, "rules");
   geometry::require_sequences(scene.scene, scene.label);
   const optimize::PlannerConfig choice = api::design_planner(planner, reuse, disable);
   const optimize::DesignOptions options = api::design_options(
@@ -103,6 +106,7 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
   }
   if (failure) std::rethrow_exception(failure);
   design->info = {options.seed, choice.name(), static_cast<int>(iterations)};
+  design->accessibility = api::attach_accessibility(design->result, rules, design->info);
   design->label = scene.label;
   design->tours = json_loads(optimize::tours_document(design->result))["tours"];
   design->report = json_loads(optimize::report_document(design->result, design->info));
@@ -147,7 +151,7 @@ void bind_design_result(py::module_& m) {
             const std::string title = d.result.layout.name + " — seed " +
                                       std::to_string(d.info.seed) +
                                       (d.result.valid ? "" : " (NOT VALID)");
-            return optimize::design_svg(d.result, title);
+            return optimize::design_svg(d.result, title, d.info.svg_overlay);
           },
           "design.svg's text.")
       .def(
@@ -156,13 +160,15 @@ void bind_design_result(py::module_& m) {
             const std::string path =
                 py::module_::import("os").attr("fspath")(dir).cast<std::string>();
             py::gil_scoped_release release;
-            optimize::require_writable_directory(path);
-            optimize::write_design(d.result, d.info, path);
+            api::write_design_files(d.result, d.info, d.accessibility, path);
           },
           py::arg("dir"),
-          "Writes layout.json, tours.json, design.svg and report.json into `dir` (created if "
-          "missing), byte for byte what `hrspace design --out dir` writes for the same run; "
-          "each file is replaced atomically.")
+          "Writes accessibility.json, layout.json, tours.json, design.svg, report.json and "
+          "manifest.json into `dir` (created if missing), byte for byte what `hrspace design "
+          "--out dir` writes for the same run; each file is replaced atomically.")
+      .def_property_readonly(
+          "accessibility", [](const PyDesign& d) { return json_loads(d.accessibility); },
+          "accessibility.json as a dict: route widths, clear floor spaces, turning space, door.")
       .def("__repr__", [](const PyDesign& d) {
         return "Design('" + d.result.layout.name + "', seed " + std::to_string(d.info.seed) +
                ", cost " + std::to_string(d.result.initial.total()) + " -> " +
@@ -180,7 +186,8 @@ void bind_design(py::module_& m) {
       "every layout toured by the wheelchair) and returns a Design. seed, iterations, "
       "planner (a preset, then optional comma items, as --planner), reuse (replaces the "
       "proposed planner's techniques, as --reuse), disable (design-loop switches to turn off, "
-      "as --disable) and threads (0: all cores; results do not depend on it) are the "
+      "as --disable), threads (0: all cores; results do not depend on it) and rules (the "
+      "accessibility rule set, ada or iso, as --rules) are the "
       "command's options. progress(step) is called after every iteration with a dict (the "
       "fields of report.json's trace: iteration from 1, iterations, temperature, object, valid, "
       "accepted, proposed, current, best, planning_ms). The GIL is released while it runs. "
@@ -191,7 +198,7 @@ void bind_design(py::module_& m) {
   m.def("design", &run_design, py::arg("scene"), py::kw_only(), py::arg("seed") = 1,
         py::arg("iterations") = 700, py::arg("planner") = "default",
         py::arg("reuse") = py::none(), py::arg("disable") = py::none(), py::arg("threads") = 0,
-        py::arg("progress") = py::none(), doc.c_str());
+        py::arg("rules") = "ada", py::arg("progress") = py::none(), doc.c_str());
 }
 
 }  // namespace hrs::python

@@ -158,9 +158,13 @@ class Design:
     @property
     def svg(self) -> str:
         """design.svg's text."""
+    @property
+    def accessibility(self) -> Dict[str, Any]:
+        """accessibility.json as a dict: route widths, clear floor spaces, turning space, door."""
     def save(self, dir: Union[str, os.PathLike[str]]) -> None:
-        """Writes layout.json, tours.json, design.svg and report.json into `dir`, byte for byte
-        what `hrspace design --out dir` writes for the same run."""
+        """Writes accessibility.json, layout.json, tours.json, design.svg, report.json and
+        manifest.json into `dir`, byte for byte what `hrspace design --out dir` writes for
+        the same run."""
 
 def plan(
     scene: Scene,
@@ -194,6 +198,7 @@ def design(
     reuse: Optional[str] = None,
     disable: Optional[str] = None,
     threads: int = 0,
+    rules: str = "ada",
     progress: Optional[Callable[[Dict[str, Any]], None]] = None,
 ) -> Design:
     """Optimizes the layout as `hrspace design`; Ctrl-C raises KeyboardInterrupt whose

@@ -255,13 +255,14 @@ TEST(DesignCli, FaultsLoseNoData_UnwritableOutIsRefusedFirst) {
   const fs::path file = hrs::test_support::scratch_path("cli_file");
   std::ofstream(file) << "x";
   std::string err;
-  const auto t0 = std::chrono::steady_clock::now();
+  // 100000 iterations would run for many minutes: refused before any work,
+  // the one line names --out's path (the suite's external timeout bounds it).
   EXPECT_EQ(run("design " + kBedroom + " --out " + (file / "sub").string() +
                     " --iterations 100000",
                 &err),
             2);
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 10.0);
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1);
+  EXPECT_NE(err.find((file / "sub").string()), std::string::npos) << err;
   fs::remove(file);
 }
 

@@ -9,7 +9,8 @@ import pytest
 import hrspace
 from conftest import BEDROOM, SOURCE_DIR, cli_error, drop_timings, run_cli
 
-FILES = ["layout.json", "tours.json", "design.svg", "report.json", "manifest.json"]
+FILES = ["layout.json", "tours.json", "design.svg", "report.json", "manifest.json",
+         "accessibility.json"]
 
 
 def compare_with_command(tmp_path, scene_path, seed, iterations, planner, threads):
@@ -21,7 +22,7 @@ def compare_with_command(tmp_path, scene_path, seed, iterations, planner, thread
     status, out, err = run_cli("design", scene_path, "--out", tmp_path / "cli", "--seed", seed,
                                "--iterations", iterations, "--planner", planner, "--threads", threads)
     assert status == 0, err
-    for name in FILES[:3]:
+    for name in FILES[:3] + ["accessibility.json"]:
         ours, theirs = (tmp_path / "py" / name).read_bytes(), (tmp_path / "cli" / name).read_bytes()
         assert ours == theirs, name
     ours = json.loads((tmp_path / "py" / "report.json").read_text())
