@@ -52,14 +52,6 @@ double ray_hit(const std::vector<Polygon>& polys, Vec2 p, Vec2 d) {
   return best;
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const double ex = b.x - a.x, ey = b.y - a.y;
-  const double len2 = ex * ex + ey * ey;
-  double u = len2 > 0.0 ? ((p.x - a.x) * ex + (p.y - a.y) * ey) / len2 : 0.0;
-  u = std::clamp(u, 0.0, 1.0);
-  return std::hypot(p.x - (a.x + u * ex), p.y - (a.y + u * ey));
-}
-
 //! Crossing-number test (a point on an edge counts as inside or outside;
 //! callers ask about grid centres with a positive distance to every edge).
 bool inside(const Polygon& poly, Vec2 p) {
@@ -222,7 +214,7 @@ Report evaluate(const geometry::Scene& layout, const std::vector<planning::Tour>
       double r = kInf;
       for (const Polygon& poly : polys)
         for (std::size_t i = 0; i < poly.size(); ++i)
-          r = std::min(r, segment_distance(c, poly[i], poly[(i + 1) % poly.size()]));
+          r = std::min(r, geometry::point_segment_distance(c, poly[i], poly[(i + 1) % poly.size()]));
       if (2 * r > rep.turning.largest_diameter) rep.turning.largest_diameter = 2 * r, rep.turning.centre = c;
     }
   rep.turning.fits = rep.turning.largest_diameter >= rules.turning_diameter;
@@ -301,7 +293,7 @@ std::string summary_json(const Report& r) {
   return j.dump();
 }
 
-std::string svg_overlay(const Report& r, const geometry::Scene&) {
+std::string svg_overlay(const Report& r) {
   std::ostringstream s;
   for (const Route& x : r.routes)
     for (const Stretch& st : x.below_width) {

@@ -110,7 +110,7 @@ std::string report_json(const Report& report);
 //! The compact summary report.json carries under "accessibility".
 std::string summary_json(const Report& report);
 //! SVG elements in room coordinates (metres, y up) for design.svg.
-std::string svg_overlay(const Report& report, const geometry::Scene& layout);
+std::string svg_overlay(const Report& report);
 //! One line for stdout, e.g. "accessibility (ada): pass 3/4: route ..."
 std::string summary_line(const Report& report);
 

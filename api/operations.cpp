@@ -189,7 +189,7 @@ std::string attach_accessibility(const optimize::DesignResult& result, const std
   summary.pop_back();  // the closing brace
   summary += ",\"file\":\"accessibility.json\",\"fnv1a64\":\"" + std::string(hex) + "\"}";
   info.report_sections.emplace_back("accessibility", summary);
-  info.svg_overlay = access::svg_overlay(report, result.layout);
+  info.svg_overlay = access::svg_overlay(report);
   if (line) *line = access::summary_line(report);
   return text;
 }

@@ -69,49 +69,6 @@ std::vector<RunSpec> rsd_runs(const StudyConfig& c) {
   return runs;
 }
 
-void rsd_lookup_cost(const rs::Decomposition& d, RunOutput& out);
-
-//! The decomposition at a radius, in an empty room twice the size of the
-//! first room's bounding box (§V-A), and its accuracy on random queries.
-RunOutput rsd_regions(const RunSpec& spec, RunContext& context) {
-  const std::string first = rooms_of(context.config, {"bedroom"}).front();
-  const geometry::Scene scene = load_room(context.config, first);
-  const auto [x0, y0, x1, y1] = geometry::bounding_box(scene.room.polygon);
-  rs::DecompositionOptions o;
-  const std::string r = param(spec, "radius");
-  o.radius = r == "chair" ? scene.wheelchair.turning_radius : std::stod(r);
-  o.room_width = x1 - x0;
-  o.room_depth = y1 - y0;
-  std::mt19937_64 rng(1);
-  const rs::Decomposition d(o, rng);
-  std::mt19937_64 query_rng(2);
-  const rs::DecompositionAccuracy a = d.evaluate(context.config.quick ? 2000 : 20000, query_rng);
-  RunOutput out;
-  out.measures.set("radius_m", o.radius);
-  out.measures.set("room", room_label(first));
-  out.measures.set("box_width_m", 2 * o.room_width);
-  out.measures.set("box_depth_m", 2 * o.room_depth);
-  out.measures.set("samples", static_cast<long>(d.samples().size()));
-  out.measures.set("drawn", static_cast<long>(d.drawn()));
-  out.measures.set("regions", d.region_count());
-  out.measures.set("word_accuracy", a.word_accuracy);
-  out.measures.set("infeasible_fraction", a.infeasible_fraction);
-  out.measures.set("mean_relative_excess", a.mean_relative_excess);
-  out.measures.set("queries", a.queries);
-  rsd_lookup_cost(d, out);
-  Table samples;
-  for (const auto& s : d.samples()) {
-    Row row;
-    row.set("x", s.pose.x);
-    row.set("y", s.pose.y);
-    row.set("theta", s.pose.theta);
-    row.set("word", std::string(rs::word_name(s.word)));
-    samples.push_back(std::move(row));
-  }
-  out.tables.emplace_back("samples", std::move(samples));
-  return out;
-}
-
 //! Nanoseconds per call of `f` over `pairs`, the best of 5 passes (the
 //! least disturbed by other work on the machine).
 template <class F>
@@ -154,6 +111,47 @@ void rsd_lookup_cost(const rs::Decomposition& d, RunOutput& out) {
                        return rs::shortest_length(a, b, radius);
                      }));
   }
+}
+
+//! The decomposition at a radius, in an empty room twice the size of the
+//! first room's bounding box (§V-A), and its accuracy on random queries.
+RunOutput rsd_regions(const RunSpec& spec, RunContext& context) {
+  const std::string first = rooms_of(context.config, {"bedroom"}).front();
+  const geometry::Scene scene = load_room(context.config, first);
+  const auto [x0, y0, x1, y1] = geometry::bounding_box(scene.room.polygon);
+  rs::DecompositionOptions o;
+  const std::string r = param(spec, "radius");
+  o.radius = r == "chair" ? scene.wheelchair.turning_radius : std::stod(r);
+  o.room_width = x1 - x0;
+  o.room_depth = y1 - y0;
+  std::mt19937_64 rng(1);
+  const rs::Decomposition d(o, rng);
+  std::mt19937_64 query_rng(2);
+  const rs::DecompositionAccuracy a = d.evaluate(context.config.quick ? 2000 : 20000, query_rng);
+  RunOutput out;
+  out.measures.set("radius_m", o.radius);
+  out.measures.set("room", room_label(first));
+  out.measures.set("box_width_m", 2 * o.room_width);
+  out.measures.set("box_depth_m", 2 * o.room_depth);
+  out.measures.set("samples", static_cast<long>(d.samples().size()));
+  out.measures.set("drawn", static_cast<long>(d.drawn()));
+  out.measures.set("regions", d.region_count());
+  out.measures.set("word_accuracy", a.word_accuracy);
+  out.measures.set("infeasible_fraction", a.infeasible_fraction);
+  out.measures.set("mean_relative_excess", a.mean_relative_excess);
+  out.measures.set("queries", a.queries);
+  rsd_lookup_cost(d, out);
+  Table samples;
+  for (const auto& s : d.samples()) {
+    Row row;
+    row.set("x", s.pose.x);
+    row.set("y", s.pose.y);
+    row.set("theta", s.pose.theta);
+    row.set("word", std::string(rs::word_name(s.word)));
+    samples.push_back(std::move(row));
+  }
+  out.tables.emplace_back("samples", std::move(samples));
+  return out;
 }
 
 RunOutput rsd_run(const RunSpec& spec, RunContext& context) {
