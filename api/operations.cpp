@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "access/accessibility.h"
+#include "view/viewer.h"
 #include "api/reuse_list.h"
 #include "geometry/error.h"
 #include "geometry/free_grid.h"
@@ -176,28 +177,44 @@ optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int t
   return options;
 }
 
-std::string attach_accessibility(const optimize::DesignResult& result, const std::string& rules,
-                                 optimize::RunInfo& info, std::string* line) {
-  const access::Report report =
-      access::evaluate(result.layout, result.tours, access::Rules::named(rules));
-  const std::string text = access::report_json(report);
-  std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit, as manifest.json
+std::string fnv1a64_hex(const std::string& text) {
+  std::uint64_t h = 14695981039346656037ull;
   for (const unsigned char c : text) h = (h ^ c) * 1099511628211ull;
   char hex[17];
   std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(h));
+  return hex;
+}
+
+std::string design_title(const optimize::DesignResult& result, std::uint64_t seed) {
+  return result.layout.name + " — seed " + std::to_string(seed) +
+         (result.valid ? "" : " (NOT VALID)");
+}
+
+DesignExtras attach_extras(const optimize::DesignResult& result, const std::string& rules,
+                           optimize::RunInfo& info, std::string* line) {
+  const access::Report report =
+      access::evaluate(result.layout, result.tours, access::Rules::named(rules));
+  DesignExtras extras;
+  extras.accessibility = access::report_json(report);
   std::string summary = access::summary_json(report);
   summary.pop_back();  // the closing brace
-  summary += ",\"file\":\"accessibility.json\",\"fnv1a64\":\"" + std::string(hex) + "\"}";
+  summary += ",\"file\":\"accessibility.json\",\"fnv1a64\":\"" +
+             fnv1a64_hex(extras.accessibility) + "\"}";
   info.report_sections.emplace_back("accessibility", summary);
   info.svg_overlay = access::svg_overlay(report);
   if (line) *line = access::summary_line(report);
-  return text;
+  extras.viewer = view::design_html(result, design_title(result, info.seed) + ", planner " +
+                                                info.planner, extras.accessibility);
+  info.report_sections.emplace_back(
+      "viewer", "{\"file\":\"design.html\",\"fnv1a64\":\"" + fnv1a64_hex(extras.viewer) + "\"}");
+  return extras;
 }
 
 void write_design_files(const optimize::DesignResult& result, const optimize::RunInfo& info,
-                        const std::string& accessibility_json, const std::filesystem::path& dir) {
+                        const DesignExtras& extras, const std::filesystem::path& dir) {
   optimize::require_writable_directory(dir);
-  optimize::write_files_atomic({{dir / "accessibility.json", accessibility_json}});
+  optimize::write_files_atomic({{dir / "accessibility.json", extras.accessibility},
+                                {dir / "design.html", extras.viewer}});
   optimize::write_design(result, info, dir);
 }
 

@@ -90,18 +90,31 @@ optimize::PlannerConfig design_planner(const std::string& planner,
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
                                        const optimize::PlannerConfig& planner);
 
+//! The files the front end writes beside the design's own: accessibility.json
+//! and design.html (view/viewer.h).
+struct DesignExtras {
+  std::string accessibility;  //!< accessibility.json's text
+  std::string viewer;         //!< design.html's text
+};
+
 //! The accessibility report (access/accessibility.h) of a finished design
-//! under rule set `rules` ("ada" or "iso"; InputError otherwise): adds its
-//! summary to `info` (report.json section "accessibility", design.svg's
-//! overlay) and returns accessibility.json's text; `line` (may be null)
-//! gets the one-line summary for stdout. The CLI and Python call this, so
-//! their files stay byte-identical.
-std::string attach_accessibility(const optimize::DesignResult& result, const std::string& rules,
-                                 optimize::RunInfo& info, std::string* line = nullptr);
-//! accessibility.json (atomically), then the design's own files and
-//! manifest (optimize::write_design); report.json pins accessibility.json
-//! by its FNV-1a digest.
+//! under rule set `rules` ("ada" or "iso"; InputError otherwise) and the
+//! interactive page: adds their summaries to `info` (report.json sections
+//! "accessibility" and "viewer", each naming its file with its FNV-1a
+//! digest; design.svg's overlay) and returns both texts; `line` (may be
+//! null) gets the accessibility's one-line summary for stdout. The CLI and
+//! Python call this, so their files stay byte-identical.
+DesignExtras attach_extras(const optimize::DesignResult& result, const std::string& rules,
+                           optimize::RunInfo& info, std::string* line = nullptr);
+//! The title of design.svg and design.html: "bedroom — seed 1", and
+//! " (NOT VALID)" when the best layout failed an exact check.
+std::string design_title(const optimize::DesignResult& result, std::uint64_t seed);
+//! FNV-1a (64 bit) of `text` as 16 hex digits, as manifest.json uses.
+std::string fnv1a64_hex(const std::string& text);
+//! accessibility.json and design.html (atomically), then the design's own
+//! files and manifest (optimize::write_design); report.json pins the two by
+//! their digests.
 void write_design_files(const optimize::DesignResult& result, const optimize::RunInfo& info,
-                        const std::string& accessibility_json, const std::filesystem::path& dir);
+                        const DesignExtras& extras, const std::filesystem::path& dir);
 
 }  // namespace hrs::api

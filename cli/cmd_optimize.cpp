@@ -292,8 +292,8 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   const std::filesystem::path dir = design_dir(r, d);
   optimize::RunInfo info{options.seed, r.planner.name(), static_cast<int>(r.iterations)};
   std::string access_line;
-  const std::string access_json = api::attach_accessibility(result, r.rules, info, &access_line);
-  api::write_design_files(result, info, access_json, dir);
+  const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
+  api::write_design_files(result, info, extras, dir);
   svgs.push_back(
       optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
   print_summary(dir, result);

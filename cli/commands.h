@@ -19,5 +19,6 @@ int cmd_tour(const Argv& args);      //!< cli/cmd_planning.cpp
 int cmd_design(const Argv& args);    //!< cli/cmd_optimize.cpp
 int cmd_experiment(const Argv& args);  //!< cli/cmd_experiment.cpp
 int cmd_generate(const Argv& args);    //!< cli/cmd_generate.cpp
+int cmd_view(const Argv& args);        //!< cli/cmd_view.cpp
 
 }  // namespace hrs::cli

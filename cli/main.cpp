@@ -32,6 +32,7 @@ constexpr Command kCommands[] = {
     {"experiment", "run a study of the paper's experiments (CSV tables)",
      hrs::cli::cmd_experiment},
     {"generate", "random rooms tourable by construction (the room zoo)", hrs::cli::cmd_generate},
+    {"view", "the path of a design's interactive page (design.html)", hrs::cli::cmd_view},
 };
 
 void usage(std::ostream& out) {

@@ -35,7 +35,7 @@ namespace {
 struct PyDesign {
   optimize::DesignResult result;
   optimize::RunInfo info;
-  std::string accessibility;  //!< accessibility.json's text
+  api::DesignExtras extras;  //!< accessibility.json's and design.html's text
   std::string label;
   py::object tours, report;  //!< parsed once
 };
@@ -106,7 +106,7 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
   }
   if (failure) std::rethrow_exception(failure);
   design->info = {options.seed, choice.name(), static_cast<int>(iterations)};
-  design->accessibility = api::attach_accessibility(design->result, rules, design->info);
+  design->extras = api::attach_extras(design->result, rules, design->info);
   design->label = scene.label;
   design->tours = json_loads(optimize::tours_document(design->result))["tours"];
   design->report = json_loads(optimize::report_document(design->result, design->info));
@@ -148,10 +148,8 @@ void bind_design_result(py::module_& m) {
       .def_property_readonly(
           "svg",
           [](const PyDesign& d) {
-            const std::string title = d.result.layout.name + " — seed " +
-                                      std::to_string(d.info.seed) +
-                                      (d.result.valid ? "" : " (NOT VALID)");
-            return optimize::design_svg(d.result, title, d.info.svg_overlay);
+            return optimize::design_svg(d.result, api::design_title(d.result, d.info.seed),
+                                        d.info.svg_overlay);
           },
           "design.svg's text.")
       .def(
@@ -160,15 +158,37 @@ void bind_design_result(py::module_& m) {
             const std::string path =
                 py::module_::import("os").attr("fspath")(dir).cast<std::string>();
             py::gil_scoped_release release;
-            api::write_design_files(d.result, d.info, d.accessibility, path);
+            api::write_design_files(d.result, d.info, d.extras, path);
           },
           py::arg("dir"),
-          "Writes accessibility.json, layout.json, tours.json, design.svg, report.json and "
+          "Writes accessibility.json, design.html, layout.json, tours.json, design.svg, "
+          "report.json and "
           "manifest.json into `dir` (created if missing), byte for byte what `hrspace design "
           "--out dir` writes for the same run; each file is replaced atomically.")
       .def_property_readonly(
-          "accessibility", [](const PyDesign& d) { return json_loads(d.accessibility); },
+          "accessibility", [](const PyDesign& d) { return json_loads(d.extras.accessibility); },
           "accessibility.json as a dict: route widths, clear floor spaces, turning space, door.")
+      .def_property_readonly(
+          "html", [](const PyDesign& d) { return d.extras.viewer; },
+          "design.html's text: the interactive page (layout, tours with the chair animated, "
+          "annealing trace, accessibility overlays), self-contained.")
+      .def(
+          "_repr_html_",
+          [](const PyDesign& d) {
+            // A notebook shows the page in a sandboxed iframe (srcdoc), so its
+            // script and style stay apart from the notebook's.
+            std::string escaped;
+            for (const char c : d.extras.viewer) {
+              if (c == '&') escaped += "&amp;";
+              else if (c == '"') escaped += "&quot;";
+              else if (c == '<') escaped += "&lt;";
+              else if (c == '>') escaped += "&gt;";
+              else escaped += c;
+            }
+            return "<iframe sandbox=\"allow-scripts\" style=\"width:100%;height:760px;border:0\" "
+                   "title=\"hrspace design\" srcdoc=\"" + escaped + "\"></iframe>";
+          },
+          "The interactive page (design.html) in an iframe, for notebooks.")
       .def("__repr__", [](const PyDesign& d) {
         return "Design('" + d.result.layout.name + "', seed " + std::to_string(d.info.seed) +
                ", cost " + std::to_string(d.result.initial.total()) + " -> " +

@@ -8,6 +8,7 @@ packages=(
   libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
   libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libompl-dev
   python3 python3-matplotlib linux-perf
+  chromium chromium-driver python3-selenium
   pybind11-dev python3-dev python3-numpy python3-pytest
   slurm-wlm slurm-client munge
 )

@@ -161,10 +161,16 @@ class Design:
     @property
     def accessibility(self) -> Dict[str, Any]:
         """accessibility.json as a dict: route widths, clear floor spaces, turning space, door."""
+    @property
+    def html(self) -> str:
+        """design.html's text: the interactive page (layout, tours with the chair animated,
+        annealing trace, accessibility overlays), self-contained."""
+    def _repr_html_(self) -> str:
+        """The interactive page (design.html) in an iframe, for notebooks."""
     def save(self, dir: Union[str, os.PathLike[str]]) -> None:
-        """Writes accessibility.json, layout.json, tours.json, design.svg, report.json and
-        manifest.json into `dir`, byte for byte what `hrspace design --out dir` writes for
-        the same run."""
+        """Writes accessibility.json, design.html, layout.json, tours.json, design.svg,
+        report.json and manifest.json into `dir`, byte for byte what `hrspace design --out
+        dir` writes for the same run."""
 
 def plan(
     scene: Scene,

@@ -203,7 +203,27 @@ for f in m["files"]:
         h = ((h ^ c) * 1099511628211) % (1 << 64)
     assert len(data) == f["bytes"] and f"{h:016x}" == f["fnv1a64"], f
 print("ok   manifest matches the files")
+# accessibility.json and design.html are pinned by report.json's digests.
+report = json.load(open(os.path.join(d, "report.json")))
+for section in ("accessibility", "viewer"):
+    name = report[section]["file"]
+    data = open(os.path.join(d, name), "rb").read()
+    h = 14695981039346656037
+    for c in data:
+        h = ((h ^ c) * 1099511628211) % (1 << 64)
+    assert f"{h:016x}" == report[section]["fnv1a64"], (section, name)
+html = open(os.path.join(d, "design.html"), encoding="utf-8").read()
+assert "http-equiv=\"Content-Security-Policy\"" in html and "default-src 'none'" in html
+print("ok   report.json pins accessibility.json and design.html")
 PY
+# view: the page's path; one line naming DIR when there is none.
+check "view" 0 env -u DISPLAY -u WAYLAND_DISPLAY "$bin" view "$tmp/dp"
+[ "$(cat "$tmp/out")" = "$(cd "$tmp/dp" && pwd)/design.html" ] || { echo "FAIL view printed $(cat "$tmp/out")"; fails=$((fails+1)); }
+check "view --print" 0 "$bin" view "$tmp/dp" --print
+check "view without a design" 2 "$bin" view "$tmp"
+expect_err "view without a design message" "no design.html"
+check "view of a missing directory" 2 "$bin" view "$tmp/none"
+check "view help" 0 "$bin" view --help
 mkdir -p "$tmp/locked"
 check "design into a locked --out" 2 sh -c "( flock 9; \"$bin\" design \"$bed\" --out \"$tmp/locked\" --iterations 1 ) 9>\"$tmp/locked/.hrspace.lock\""
 expect_err "locked --out message" "locked: in use by another hrspace run"
@@ -239,7 +259,8 @@ expect_err "generate without --out message" "--out"
 
 if [ -w /dev/full ]; then
   for cmd in "validate $bed" "collide $bed --poses $tmp/poses.csv" "rs --radius 0.7 --pairs $tmp/pairs.csv" \
-             "plan $bed --from 0.9,1.2,0 --to 2.0,1.2,0" "tour $bed --sequence door,tv" "--help" "validate --help"; do
+             "plan $bed --from 0.9,1.2,0 --to 2.0,1.2,0" "tour $bed --sequence door,tv" "--help" "validate --help" \
+             "view $tmp/dp --print"; do
     # shellcheck disable=SC2086
     "$bin" $cmd >/dev/full 2>"$tmp/err"; got=$?
     if [ "$got" != 1 ] || ! grep -q "cannot write to standard output" "$tmp/err"; then

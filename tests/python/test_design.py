@@ -2,6 +2,7 @@
 seed (layout.json, tours.json and design.svg byte for byte, report.json but
 for its wall-clock times); progress; errors."""
 
+import html
 import json
 
 import pytest
@@ -10,7 +11,7 @@ import hrspace
 from conftest import BEDROOM, SOURCE_DIR, cli_error, drop_timings, run_cli
 
 FILES = ["layout.json", "tours.json", "design.svg", "report.json", "manifest.json",
-         "accessibility.json"]
+         "accessibility.json", "design.html"]
 
 
 def compare_with_command(tmp_path, scene_path, seed, iterations, planner, threads):
@@ -22,7 +23,7 @@ def compare_with_command(tmp_path, scene_path, seed, iterations, planner, thread
     status, out, err = run_cli("design", scene_path, "--out", tmp_path / "cli", "--seed", seed,
                                "--iterations", iterations, "--planner", planner, "--threads", threads)
     assert status == 0, err
-    for name in FILES[:3] + ["accessibility.json"]:
+    for name in FILES[:3] + ["accessibility.json", "design.html"]:
         ours, theirs = (tmp_path / "py" / name).read_bytes(), (tmp_path / "cli" / name).read_bytes()
         assert ours == theirs, name
     ours = json.loads((tmp_path / "py" / "report.json").read_text())
@@ -34,6 +35,12 @@ def compare_with_command(tmp_path, scene_path, seed, iterations, planner, thread
     assert result.tours == json.loads((tmp_path / "cli" / "tours.json").read_text())["tours"]
     assert drop_timings(result.report) == drop_timings(theirs)
     assert result.svg.encode() == (tmp_path / "cli" / "design.svg").read_bytes()
+    page = (tmp_path / "cli" / "design.html").read_text(encoding="utf-8")
+    assert result.html == page
+    # A notebook's view: the page whole, escaped into a sandboxed iframe.
+    frame = result._repr_html_()
+    assert frame.startswith("<iframe sandbox=\"allow-scripts\"")
+    assert html.unescape(frame.split('srcdoc="', 1)[1].rsplit('"></iframe>', 1)[0]) == page
     assert [s["iteration"] for s in steps] == list(range(1, iterations + 1))
     assert steps[-1]["best"] == pytest.approx(result.cost)
     assert not result.stopped
