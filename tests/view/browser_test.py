@@ -11,9 +11,11 @@ wrote from file:// and checks that
   - the accessibility overlay toggles off and on;
   - every overlay toggle and the scrubber act on the page.
 
-usage: browser_test.py HRSPACE SCENE [--screenshot PNG]
+usage: browser_test.py HRSPACE SCENE [--iterations N] [--screenshot PNG]
 With --screenshot the page, tour 2 selected and the route-width overlay on,
-is saved as a PNG (the README's picture: docs/images/viewer.png).
+is saved as a PNG. The README's picture is made so:
+  python3 tests/view/browser_test.py build/cli/hrspace scenes/bedroom.json \
+      --iterations 700 --screenshot docs/images/viewer.png
 """
 import argparse
 import json
@@ -62,13 +64,14 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("hrspace")
     parser.add_argument("scene")
+    parser.add_argument("--iterations", default="150")
     parser.add_argument("--screenshot")
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp) / "design"
         subprocess.run([args.hrspace, "design", args.scene, "--out", str(out), "--seed", "1",
-                        "--iterations", "150"], check=True, stdout=subprocess.DEVNULL)
+                        "--iterations", args.iterations], check=True, stdout=subprocess.DEVNULL)
         page = out / "design.html"
         check(page.is_file(), "hrspace design wrote no design.html")
         text = page.read_text(encoding="utf-8")
