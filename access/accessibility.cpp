@@ -72,6 +72,48 @@ Polygon rectangle(const Pose2& pose, double length, double width) {
   return out;
 }
 
+//! Sign of the turn a → b → c, zero within a relative tolerance.
+int turn(Vec2 a, Vec2 b, Vec2 c) {
+  const double v = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+  const double scale = 1e-12 * (std::abs(b.x - a.x) + std::abs(b.y - a.y)) *
+                       (std::abs(c.x - a.x) + std::abs(c.y - a.y));
+  return v > scale ? 1 : (v < -scale ? -1 : 0);
+}
+
+//! Segments ab and cd cross at a point interior to both.
+bool cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return turn(a, b, c) * turn(a, b, d) < 0 && turn(c, d, a) * turn(c, d, b) < 0;
+}
+
+//! p lies inside the convex, counter-clockwise `rect`, off its edges.
+bool strictly_inside(const Polygon& rect, Vec2 p) {
+  for (std::size_t i = 0; i < rect.size(); ++i)
+    if (turn(rect[i], rect[(i + 1) % rect.size()], p) <= 0) return false;
+  return true;
+}
+
+//! The search's double-precision test (certified afterwards): the convex
+//! `rect` lies in the room and its interior meets no footprint's. Touching
+//! counts as free, as with the exact predicates.
+bool rect_free(const Polygon& rect, const Polygon& room, const std::vector<Polygon>& footprints) {
+  Vec2 mid{0.0, 0.0};
+  for (const Vec2 v : rect) mid = {mid.x + v.x / rect.size(), mid.y + v.y / rect.size()};
+  if (!inside(room, mid)) return false;
+  const auto meets = [&](const Polygon& poly) {
+    for (std::size_t i = 0; i < poly.size(); ++i) {
+      const Vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
+      if (strictly_inside(rect, a)) return true;
+      for (std::size_t j = 0; j < rect.size(); ++j)
+        if (cross(a, b, rect[j], rect[(j + 1) % rect.size()])) return true;
+    }
+    return false;
+  };
+  if (meets(room)) return false;
+  for (const Polygon& f : footprints)
+    if (meets(f) || inside(f, mid)) return false;
+  return true;
+}
+
 //! The runs of consecutive samples with width below `limit`.
 std::vector<Stretch> runs_below(const std::vector<Pose2>& poses, const std::vector<double>& s,
                                 const std::vector<double>& w, double limit) {
@@ -117,6 +159,7 @@ Rules Rules::named(const std::string& name, const std::string& what) {
   if (name == "iso") {
     r.name = "iso";
     r.turning_diameter = 1.5;  // ISO 21542 turning circle; the rest as ADA
+    r.t_shape = false;         // ISO 21542 gives the circle only
     return r;
   }
   throw InputError(what + ": unknown rule set '" + name + "' (expected ada or iso)");
@@ -131,12 +174,103 @@ bool Report::pass() const {
   return tours_found == tours_total;
 }
 
+std::vector<Polygon> t_shape(const Pose2& pose, double side, double arm) {
+  const auto at = [&](double x, double y) {
+    const Vec2 c = geometry::to_world(pose, {x, y});
+    return Pose2{c.x, c.y, pose.theta};
+  };
+  std::vector<Polygon> out{rectangle(at(0.0, side / 2 - arm / 2), side, arm)};
+  if (side > arm) out.push_back(rectangle(at(0.0, -arm / 2), arm, side - arm));
+  return out;
+}
+
 double route_width_at(const geometry::Scene& layout, const Pose2& pose) {
   const auto polys = boundaries(layout);
   const Vec2 p{pose.x, pose.y};
   const Vec2 left{-std::sin(pose.theta), std::cos(pose.theta)};
   return ray_hit(polys, p, left) + ray_hit(polys, p, {-left.x, -left.y});
 }
+
+namespace {
+
+//! The T-shaped space (ADA §304.3.2), turned to the direction of each room
+//! edge and by quarter turns of it, in two passes:
+//! - coarse: at the turning circle's candidate centres (spacing `step`),
+//!   the T eroded by half a cell diagonal δ (side and arm 2δ smaller, same
+//!   centre). A T that fits at some centre c contains, for the grid centre g
+//!   nearest c (|g − c| ≤ δ), the eroded T at g; so every fitting T leaves an
+//!   eroded candidate;
+//! - fine: around each candidate, centres every kFineStep across its cell,
+//!   with the full T. The first free one (double precision) that the exact
+//!   predicates certify is kept. A T whose slack is below kFineStep in some
+//!   direction may be missed: the search errs towards "does not fit".
+constexpr double kFineStep = 0.0025;  //!< m
+
+void find_t_shape(const geometry::Scene& layout, const std::vector<Polygon>& polys,
+                  const std::vector<Polygon>& footprints, const geometry::ReachableSet& reach,
+                  const Rules& rules, double step, Turning& out) {
+  out.t_evaluated = true;
+  const double side = rules.turning_diameter, arm = rules.t_arm_width;
+  const double delta = step * std::sqrt(0.5);
+  if (arm <= 2 * delta) return;
+  // The eroded T's inner radius about its centre (0 when the centre is
+  // outside it): every candidate centre needs that much clearance.
+  const double es = side - 2 * delta, ea = arm - 2 * delta;
+  double inner = 0.0;
+  if (ea >= es / 2) inner = std::min(es / 2, std::hypot(ea / 2, es / 2 - ea));
+  std::vector<double> turns;
+  const Polygon& room = layout.room.polygon;
+  for (std::size_t i = 0; i < room.size(); ++i) {
+    const Vec2 a = room[i], b = room[(i + 1) % room.size()];
+    double t = std::fmod(std::atan2(b.y - a.y, b.x - a.x), M_PI / 2);
+    if (t < 0) t += M_PI / 2;
+    if (std::none_of(turns.begin(), turns.end(), [&](double u) { return std::abs(u - t) < 1e-9; }))
+      turns.push_back(t);
+  }
+  const auto free_t = [&](const Pose2& pose, double sd, double ar) {
+    for (const Polygon& part : t_shape(pose, sd, ar))
+      if (!rect_free(part, room, footprints)) return false;
+    return true;
+  };
+  const auto certified = [&](const Pose2& pose) {
+    for (const Polygon& part : t_shape(pose, side, arm)) {
+      if (!geometry::inside_with_contact(part, room)) return false;
+      for (const Polygon& f : footprints)
+        if (geometry::overlap_beyond_contact(part, f)) return false;
+    }
+    return true;
+  };
+  const int fine = static_cast<int>(std::ceil(step / kFineStep));
+  const auto [x0, y0, x1, y1] = geometry::bounding_box(room);
+  for (double y = y0 + step / 2; y < y1; y += step)
+    for (double x = x0 + step / 2; x < x1; x += step) {
+      const Vec2 c{x, y};
+      if (!inside(room, c) || !reach.column_reached({x, y, 0.0})) continue;
+      double r = kInf;
+      for (const Polygon& poly : polys)
+        for (std::size_t i = 0; i < poly.size(); ++i)
+          r = std::min(r, geometry::point_segment_distance(c, poly[i], poly[(i + 1) % poly.size()]));
+      if (r + 1e-9 < inner) continue;
+      bool in_object = false;
+      for (const Polygon& f : footprints) in_object = in_object || inside(f, c);
+      if (in_object) continue;
+      for (const double t0 : turns)
+        for (int q = 0; q < 4; ++q) {
+          const double theta = t0 + q * M_PI / 2;
+          if (!free_t({x, y, theta}, es, ea)) continue;
+          for (int i = 0; i <= fine; ++i)
+            for (int j = 0; j <= fine; ++j) {
+              const Pose2 pose{x - step / 2 + i * step / fine, y - step / 2 + j * step / fine, theta};
+              if (!free_t(pose, side, arm) || !certified(pose)) continue;
+              out.t_fits = true;
+              out.t_pose = pose;
+              return;
+            }
+        }
+    }
+}
+
+}  // namespace
 
 Report evaluate(const geometry::Scene& layout, const std::vector<planning::Tour>& tours,
                 const Rules& rules) {
@@ -217,9 +351,13 @@ Report evaluate(const geometry::Scene& layout, const std::vector<planning::Tour>
           r = std::min(r, geometry::point_segment_distance(c, poly[i], poly[(i + 1) % poly.size()]));
       if (2 * r > rep.turning.largest_diameter) rep.turning.largest_diameter = 2 * r, rep.turning.centre = c;
     }
-  rep.turning.fits = rep.turning.largest_diameter >= rules.turning_diameter;
+  rep.turning.circle_fits = rep.turning.largest_diameter >= rules.turning_diameter;
+  if (grid && !rep.turning.circle_fits && rules.t_shape) find_t_shape(layout, polys, footprints, reach, rules, step, rep.turning);
+  rep.turning.fits = rep.turning.circle_fits || rep.turning.t_fits;
+  const Vec2 from = rep.turning.t_fits ? Vec2{rep.turning.t_pose.x, rep.turning.t_pose.y}
+                                        : rep.turning.centre;
   for (const Stop& st : rep.stops) {
-    const double d = std::hypot(st.pose.x - rep.turning.centre.x, st.pose.y - rep.turning.centre.y);
+    const double d = std::hypot(st.pose.x - from.x, st.pose.y - from.y);
     auto it = std::find_if(rep.turning.distance_to_stops.begin(), rep.turning.distance_to_stops.end(),
                            [&](const auto& e) { return e.first == st.object; });
     if (it == rep.turning.distance_to_stops.end())
@@ -255,6 +393,8 @@ std::string report_json(const Report& r) {
         {"route_narrow_width_m", r.rules.route_narrow_width},
         {"narrow_length_m", r.rules.narrow_length},
         {"turning_diameter_m", r.rules.turning_diameter},
+        {"t_shape", r.rules.t_shape},
+        {"t_arm_width_m", r.rules.t_arm_width},
         {"clear_floor_m", {r.rules.floor_width, r.rules.floor_length}},
         {"door_width_m", r.rules.door_width}}},
       {"pass", r.pass()},
@@ -265,6 +405,11 @@ std::string report_json(const Report& r) {
        {{"rule_m", r.rules.turning_diameter},
         {"largest_diameter_m", r.turning.largest_diameter},
         {"centre", json::array({r.turning.centre.x, r.turning.centre.y})},
+        {"circle_pass", r.turning.circle_fits},
+        {"t_shape",
+         {{"evaluated", r.turning.t_evaluated},
+          {"pass", r.turning.t_fits},
+          {"pose", r.turning.t_fits ? pose_json(r.turning.t_pose) : json(nullptr)}}},
         {"pass", r.turning.fits},
         {"grid_m", r.turning.grid_m},
         {"distance_to_stops_m", dist}}},
@@ -289,6 +434,7 @@ std::string summary_json(const Report& r) {
             {"stops", static_cast<int>(r.stops.size())},
             {"turning_diameter_m", r.turning.largest_diameter},
             {"turning_pass", r.turning.fits},
+            {"turning_t_shape", r.turning.t_fits},
             {"door_pass", r.door_pass}};
   return j.dump();
 }
@@ -311,12 +457,19 @@ std::string svg_overlay(const Report& r) {
     for (const Vec2& p : rect) s << num(p.x) << ',' << num(p.y) << ' ';
     s << "\"/>\n";
   }
-  if (r.turning.largest_diameter > 0.0)
+  if (r.turning.t_fits) {
+    for (const Polygon& part : t_shape(r.turning.t_pose, r.rules.turning_diameter, r.rules.t_arm_width)) {
+      s << "<polygon fill=\"#2ca02c\" fill-opacity=\"0.12\" stroke=\"#2ca02c\" stroke-width=\"0.02\" points=\"";
+      for (const Vec2& p : part) s << num(p.x) << ',' << num(p.y) << ' ';
+      s << "\"/>\n";
+    }
+  } else if (r.turning.largest_diameter > 0.0) {
     s << "<circle cx=\"" << num(r.turning.centre.x) << "\" cy=\"" << num(r.turning.centre.y)
       << "\" r=\"" << num(std::min(r.turning.largest_diameter, r.rules.turning_diameter) / 2)
       << "\" fill=\"" << (r.turning.fits ? "#2ca02c" : "#d62728")
       << "\" fill-opacity=\"0.12\" stroke=\"" << (r.turning.fits ? "#2ca02c" : "#d62728")
       << "\" stroke-width=\"0.02\"/>\n";
+  }
   return s.str();
 }
 
@@ -328,7 +481,9 @@ std::string summary_line(const Report& r) {
   s << "accessibility (" << r.rules.name << "): " << (r.pass() ? "pass" : "fail") << "; routes "
     << routes_pass << "/" << r.routes.size() << " wide enough, clear floor at " << floors << "/"
     << r.stops.size() << " stops, turning circle " << num(r.turning.largest_diameter) << " m ("
-    << (r.turning.fits ? "fits" : "does not fit") << "), door " << num(r.door_width) << " m";
+    << (r.turning.circle_fits ? "fits" : "does not fit")
+    << (r.turning.t_evaluated ? (r.turning.t_fits ? ", T-shape fits" : ", nor a T-shape") : "")
+    << "), door " << num(r.door_width) << " m";
   return s.str();
 }
 

@@ -6,11 +6,12 @@
 // door reaches, and is the door wide enough. The rules are data (Rules),
 // with the figures of the 2010 ADA Standards for Accessible Design:
 //   §403.5.1 route clear width 915 mm, narrowing to 815 mm for at most 610 mm;
-//   §304.3   turning space: a 1525 mm circle;
+//   §304.3   turning space: a 1525 mm circle, or a T-shaped space within a
+//            1525 mm square, arms and base 915 mm wide (§304.3.2);
 //   §305.3   clear floor space 760 × 1220 mm at each element used;
 //   §404.2.3 door clear width 815 mm.
-// The `iso` preset changes the turning circle to ISO 21542's 1500 mm and
-// keeps the other ADA figures. Han, Law, Latombe and Kunz (2002) checked
+// The `iso` preset changes the turning circle to ISO 21542's 1500 mm, has
+// no T-shaped alternative, and keeps the other ADA figures. Han, Law, Latombe and Kunz (2002) checked
 // building plans against ADA rules with motion planning; this report does
 // it for one room's layout and the tours hrspace found in it.
 //
@@ -27,6 +28,10 @@
 //   of the largest distance to every wall and footprint; the largest found
 //   is within a grid diagonal (7 cm at 5 cm spacing) of the largest that fits
 //   anywhere on that set (rooms with many edges get a coarser grid, reported);
+//   when no circle fits, the T-shaped space is tried at the same centres,
+//   turned to each wall's direction and by quarter turns; the first free one
+//   found in double precision is certified with the exact predicates
+//   (geometry/polygon_ops.h) before it counts;
 // - door: the scene's door width.
 
 #include <string>
@@ -44,6 +49,8 @@ struct Rules {
   double route_narrow_width = 0.815;  //!< m, allowed for at most narrow_length
   double narrow_length = 0.610;       //!< m
   double turning_diameter = 1.525;    //!< m, ADA §304.3 (ISO 21542: 1.5)
+  bool t_shape = true;                //!< a T-shaped space may replace the circle (ADA §304.3.2)
+  double t_arm_width = 0.915;         //!< m, width of the T's arms and base
   double floor_width = 0.760;         //!< m, ADA §305.3
   double floor_length = 1.220;        //!< m
   double door_width = 0.815;          //!< m, ADA §404.2.3
@@ -77,10 +84,16 @@ struct Stop {
 };
 
 struct Turning {
-  bool fits = false;
+  bool fits = false;                //!< the circle fits, or the T-shaped space does
+  bool circle_fits = false;
   geometry::Vec2 centre{0.0, 0.0};  //!< of the largest circle found
   double largest_diameter = 0.0;    //!< m (0 when the door reaches nothing)
   double grid_m = 0.0;              //!< spacing of the candidate centres
+  //! The T-shaped space: tried when no circle fits and the rules allow it.
+  bool t_evaluated = false;
+  bool t_fits = false;
+  geometry::Pose2 t_pose;  //!< centre of its square; the bar lies along +y of this frame
+  //! From the circle's centre, or from the T's when only the T fits.
   std::vector<std::pair<std::string, double>> distance_to_stops;  //!< object, m
 };
 
@@ -100,6 +113,10 @@ struct Report {
 Report evaluate(const geometry::Scene& layout, const std::vector<planning::Tour>& tours,
                 const Rules& rules);
 
+//! The T-shaped turning space at `pose` as two rectangles: the bar (the
+//! square's side long, the arm width deep, along the square's +y edge) and
+//! the stem (the arm width wide, down to the square's −y edge).
+std::vector<geometry::Polygon> t_shape(const geometry::Pose2& pose, double side, double arm);
 //! Route width at `pose`: the clear length of the line through the pose's
 //! position perpendicular to its heading, between the first wall or
 //! footprint boundary on the left and on the right.

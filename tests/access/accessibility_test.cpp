@@ -157,6 +157,135 @@ TEST(Accessibility, TurningCircleJustAboveAndBelowTheRule) {
   EXPECT_DOUBLE_EQ(c.rules.turning_diameter, 1.5);
 }
 
+//! A 1.535 m square room with a fixed box in each bottom corner: the free
+//! space is a T with a `bar` deep top and a `stem` wide middle (door on the
+//! stem's wall); the whole scene turned by `rot` about the origin.
+Scene t_room(double stem, double bar, double rot) {
+  const double S = 1.535, wb = (S - stem) / 2, hb = S - bar;
+  const double c = std::cos(rot), s = std::sin(rot);
+  const auto R = [&](double x, double y) { return json::array({x * c - y * s, x * s + y * c}); };
+  const auto pose = [&](double x, double y) {
+    json p = R(x, y);
+    p.push_back(rot);
+    return p;
+  };
+  json j = {{"format", "hrspace-scene/1"},
+            {"name", "tspace"},
+            {"room", {{"polygon", {R(0, 0), R(S, 0), R(S, S), R(0, S)}}}},
+            {"door", {{"center", R(S / 2, 0)}, {"width", 0.8}}},
+            {"wheelchair", {{"length", 1.1}, {"width", 0.65}, {"turning_radius", 0.7}}},
+            {"objects",
+             {{{"id", "a"}, {"size", {wb, hb}}, {"pose", pose(wb / 2, hb / 2)}, {"fixed", true}},
+              {{"id", "b"}, {"size", {wb, hb}}, {"pose", pose(S - wb / 2, hb / 2)}, {"fixed", true}}}},
+            {"activity", {{"transitions", {{"door", {{"a", 1.0}}}}}, {"visits", 1}}}};
+  return hrs::geometry::parse_scene(j.dump(), "tspace.json");
+}
+
+//! Crossing-number point-in-polygon, written here for the check.
+bool point_in(const hrs::geometry::Polygon& poly, double x, double y) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+    if ((poly[i].y > y) != (poly[j].y > y) &&
+        x < (poly[j].x - poly[i].x) * (y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
+      in = !in;
+  return in;
+}
+
+//! Samples the reported T densely: every sample (kept 1 mm off the T's own
+//! outline) lies in the room and in no footprint. Returns the samples taken.
+int expect_t_free(const Scene& s, const hrs::access::Report& r, std::mt19937& rng) {
+  const auto parts = hrs::access::t_shape(r.turning.t_pose, r.rules.turning_diameter, r.rules.t_arm_width);
+  std::uniform_real_distribution<double> u(0.001, 0.999);
+  int n = 0;
+  for (const auto& part : parts) {
+    // part: counter-clockwise rectangle p0..p3; p0 + a·(p1 − p0) + b·(p3 − p0).
+    for (int k = 0; k < 1500; ++k, ++n) {
+      const double a = u(rng), b = u(rng);
+      const double x = part[0].x + a * (part[1].x - part[0].x) + b * (part[3].x - part[0].x);
+      const double y = part[0].y + a * (part[1].y - part[0].y) + b * (part[3].y - part[0].y);
+      EXPECT_TRUE(point_in(s.room.polygon, x, y)) << x << "," << y;
+      for (const auto& o : s.objects)
+        EXPECT_FALSE(point_in(hrs::geometry::world_footprint(o), x, y)) << o.id << " " << x << "," << y;
+    }
+  }
+  return n;
+}
+
+TEST(Accessibility, TShapedSpaceJustAboveAndBelowTheRule) {
+  std::mt19937 rng(7);
+  // Arms and base 920 mm wide, bar 935 mm deep: the T of ADA §304.3.2
+  // (915 mm) fits; the 1525 mm circle does not (the room is 1.535 m wide,
+  // but the boxes leave no 1.525 m disc).
+  for (const double rot : {0.0, 0.5, -2.1}) {
+    const Scene fit = t_room(0.92, 0.935, rot);
+    const auto a = hrs::access::evaluate(fit, {}, Rules{});
+    EXPECT_FALSE(a.turning.circle_fits) << rot;
+    EXPECT_LT(a.turning.largest_diameter, 1.525) << rot;
+    EXPECT_TRUE(a.turning.t_evaluated) << rot;
+    EXPECT_TRUE(a.turning.t_fits) << rot;
+    EXPECT_TRUE(a.turning.fits) << rot;
+    if (a.turning.t_fits) EXPECT_EQ(expect_t_free(fit, a, rng), 3000);
+    const json doc = json::parse(hrs::access::report_json(a));
+    EXPECT_TRUE(doc["turning_space"]["pass"].get<bool>());
+    EXPECT_FALSE(doc["turning_space"]["circle_pass"].get<bool>());
+    EXPECT_TRUE(doc["turning_space"]["t_shape"]["pass"].get<bool>());
+    // A stem 905 mm wide, or a bar 905 mm deep: neither fits.
+    for (const Scene& tight : {t_room(0.905, 0.935, rot), t_room(0.92, 0.905, rot)}) {
+      const auto b = hrs::access::evaluate(tight, {}, Rules{});
+      EXPECT_TRUE(b.turning.t_evaluated) << rot;
+      EXPECT_FALSE(b.turning.t_fits) << rot;
+      EXPECT_FALSE(b.turning.fits) << rot;
+    }
+    // ISO 21542 has the circle only.
+    const auto c = hrs::access::evaluate(fit, {}, Rules::named("iso"));
+    EXPECT_FALSE(c.turning.t_evaluated);
+    EXPECT_FALSE(c.turning.fits);
+  }
+}
+
+TEST(Accessibility, TShapesFoundAreFreeOnRandomRooms) {
+  // Random narrow rooms with random fixed boxes: whenever the report says a
+  // T fits, dense samples of it lie in the room and outside every box.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int found = 0, rooms = 0;
+  for (int trial = 0; trial < 150; ++trial) {
+    const double w = 1.45 + 0.5 * u(rng), h = 1.6 + 1.2 * u(rng);
+    json objects = json::array();
+    for (int k = 0; k < 3; ++k) {
+      const double bw = 0.15 + 0.35 * u(rng), bh = 0.15 + 0.5 * u(rng);
+      const double x = bw / 2 + (w - bw) * u(rng), y = 1.25 + bh / 2 + (h - 1.25 - bh) * u(rng);
+      if (y + bh / 2 > h) continue;
+      objects.push_back({{"id", "o" + std::to_string(k)}, {"size", {bw, bh}},
+                         {"pose", {x, y, 0.0}}, {"fixed", true}});
+    }
+    if (objects.empty()) continue;
+    json j = {{"format", "hrspace-scene/1"},
+              {"name", "random"},
+              {"room", {{"size", {w, h}}}},
+              {"door", {{"center", {w / 2, 0.0}}, {"width", 0.8}}},
+              {"wheelchair", {{"length", 1.1}, {"width", 0.65}, {"turning_radius", 0.7}}},
+              {"objects", objects},
+              {"activity", {{"transitions", {{"door", {{"o0", 1.0}}}}}, {"visits", 1}}}};
+    Scene s;
+    try {
+      s = hrs::geometry::parse_scene(j.dump(), "random.json");
+    } catch (const hrs::InputError&) {
+      continue;  // boxes overlapping each other: not a valid scene
+    }
+    ++rooms;
+    const auto r = hrs::access::evaluate(s, {}, Rules{});
+    if (r.turning.t_fits) {
+      ++found;
+      EXPECT_FALSE(r.turning.circle_fits);
+      expect_t_free(s, r, rng);
+    }
+    EXPECT_EQ(r.turning.t_evaluated, !r.turning.circle_fits) << trial;
+  }
+  EXPECT_GT(rooms, 30);
+  EXPECT_GT(found, 3) << "too few T-shapes found for the check to mean anything";
+}
+
 TEST(Accessibility, ClearFloorSpaceAtTheStop) {
   const Scene s = room(5.0, 4.0, 4.85, 3.85);
   // In the open: clear. Facing a wall 0.4 m away: the 1.22 m rectangle crosses it.
