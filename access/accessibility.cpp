@@ -165,6 +165,13 @@ Rules Rules::named(const std::string& name, const std::string& what) {
   throw InputError(what + ": unknown rule set '" + name + "' (expected ada or iso)");
 }
 
+int Report::failures() const {
+  int n = (tours_total - tours_found) + (door_pass ? 0 : 1) + (turning.fits ? 0 : 1);
+  for (const auto& r : routes) n += r.pass ? 0 : 1;
+  for (const auto& s : stops) n += s.clear_floor ? 0 : 1;
+  return n;
+}
+
 bool Report::pass() const {
   if (!door_pass || !turning.fits) return false;
   for (const auto& r : routes)

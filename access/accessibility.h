@@ -107,6 +107,9 @@ struct Report {
   int tours_total = 0, tours_found = 0;
   //! Every found route, every stop, the turning space and the door pass.
   bool pass() const;
+  //! The checks that fail: unfound tours, failing routes, stops without a
+  //! clear floor space, the turning space and the door (0 exactly when pass()).
+  int failures() const;
 };
 
 //! The report of `layout` (a designed scene) and its `tours`.

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "api/operations.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
 
 #include "access/accessibility.h"
-#include "view/viewer.h"
 #include "api/reuse_list.h"
 #include "geometry/error.h"
 #include "geometry/free_grid.h"
@@ -16,6 +16,7 @@
 #include "planning/rrt.h"
 #include "planning/tour.h"
 #include "planning/tour_json.h"
+#include "view/viewer.h"
 
 namespace hrs::api {
 
@@ -175,6 +176,56 @@ optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int t
   options.threads = threads;
   options.planner = planner;
   return options;
+}
+
+AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::DesignOptions options,
+                                   const std::string& rules, int tries, std::uint64_t stride,
+                                   const std::atomic<bool>* stop,
+                                   const std::function<void(const optimize::DesignStep&)>& progress,
+                                   const std::function<void(int)>& on_try) {
+  const access::Rules rule_set = access::Rules::named(rules);
+  const std::uint64_t first = options.seed;
+  AccessGoalResult best;
+  AccessTry kept;
+  for (int k = 0; k < std::max(1, tries); ++k) {
+    if (k > 0 && stop && stop->load()) break;
+    if (on_try) on_try(k);
+    options.seed = first + static_cast<std::uint64_t>(k) * stride;
+    optimize::DesignResult result;
+    try {
+      result = optimize::design(scene, options, stop, progress);
+    } catch (const Interrupted&) {
+      if (k == 0) throw;
+      break;  // stopped before this try's first iteration: keep the best so far
+    }
+    const access::Report report = access::evaluate(result.layout, result.tours, rule_set);
+    const AccessTry t{options.seed, report.pass(), report.failures(), result.final.total()};
+    const bool stopped = result.stopped;
+    if (best.tries.empty() || std::pair(t.failures, t.cost) < std::pair(kept.failures, kept.cost)) {
+      best.result = std::move(result);
+      best.seed = t.seed;
+      kept = t;
+    }
+    best.tries.push_back(t);
+    if (t.pass || stopped) break;
+  }
+  return best;
+}
+
+std::string access_goal_json(const AccessGoalResult& goal) {
+  std::string tried;
+  for (const AccessTry& t : goal.tries) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%s{\"seed\":%llu,\"pass\":%s,\"failures\":%d,\"cost\":%.17g}",
+                  tried.empty() ? "" : ",", static_cast<unsigned long long>(t.seed),
+                  t.pass ? "true" : "false", t.failures, t.cost);
+    tried += buf;
+  }
+  bool pass = false;
+  for (const AccessTry& t : goal.tries) pass = pass || (t.seed == goal.seed && t.pass);
+  return "{\"tries\":" + std::to_string(goal.tries.size()) + ",\"kept_seed\":" +
+         std::to_string(goal.seed) + ",\"pass\":" + (pass ? "true" : "false") +
+         ",\"tried\":[" + tried + "]}";
 }
 
 std::string fnv1a64_hex(const std::string& text) {

@@ -6,7 +6,9 @@
 // error messages (hrs::InputError, one line) whichever front end is used.
 
 #include <cstdint>
+#include <atomic>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -89,6 +91,36 @@ optimize::PlannerConfig design_planner(const std::string& planner,
 //! planner); python_design_test checks that both give the same files.
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
                                        const optimize::PlannerConfig& planner);
+
+//! One design tried by design_for_access().
+struct AccessTry {
+  std::uint64_t seed = 0;
+  bool pass = false;
+  int failures = 0;   //!< access::Report::failures()
+  double cost = 0.0;  //!< the design's final total cost
+};
+
+//! The accessibility goal (beyond the paper): a constraint on the layout a
+//! design returns. Runs the design at seeds options.seed, options.seed +
+//! stride, … (at most `tries`, each a whole design of options.iterations)
+//! and keeps the first whose layout passes `rules`; when none passes, the
+//! one with the fewest failed checks, then the lower cost. With tries = 1 it
+//! is one plain design. A stop (through `stop`) ends the tries: the best so
+//! far is kept. `on_try(k)` (may be empty) is called before try k (from 0).
+//! hrs::Interrupted escapes only when the first try stopped before its first
+//! iteration.
+struct AccessGoalResult {
+  optimize::DesignResult result;  //!< the design kept
+  std::uint64_t seed = 0;         //!< its seed
+  std::vector<AccessTry> tries;
+};
+AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::DesignOptions options,
+                                   const std::string& rules, int tries, std::uint64_t stride,
+                                   const std::atomic<bool>* stop,
+                                   const std::function<void(const optimize::DesignStep&)>& progress,
+                                   const std::function<void(int)>& on_try = {});
+//! report.json's "access_goal" section of a design_for_access() run.
+std::string access_goal_json(const AccessGoalResult& goal);
 
 //! The files the front end writes beside the design's own: accessibility.json
 //! and design.html (view/viewer.h).

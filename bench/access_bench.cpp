@@ -3,7 +3,8 @@
 // per shipped room: one default design of 700 iterations (seed 1, one
 // thread) is made once, then access::evaluate is timed on it. The design's
 // own wall time is reported as a counter, so the report's share of a
-// design is read off one run (docs/BENCHMARKS.md).
+// design is read off one run (docs/BENCHMARKS.md). BM_ReportAndViewer times
+// all the front end adds: the report and design.html.
 
 #include <benchmark/benchmark.h>
 
@@ -45,6 +46,25 @@ void BM_AccessibilityReport(benchmark::State& state) {
   state.counters["design_s"] = d.time_total_s;
 }
 BENCHMARK(BM_AccessibilityReport)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
+
+//! Everything the front end adds to a design: the accessibility report and
+//! design.html (api::attach_extras: the report, its JSON, the overlay and
+//! the page with its goal poses and route widths).
+void BM_ReportAndViewer(benchmark::State& state) {
+  const int room = static_cast<int>(state.range(0));
+  const auto& d = designed(room);
+  std::size_t bytes = 0;
+  for (auto _ : state) {
+    hrs::optimize::RunInfo info{1, "default", 700};
+    const auto extras = hrs::api::attach_extras(d, "ada", info);
+    bytes = extras.viewer.size();
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.SetLabel(kRooms[room]);
+  state.counters["design_s"] = d.time_total_s;
+  state.counters["html_kB"] = static_cast<double>(bytes) / 1000.0;
+}
+BENCHMARK(BM_ReportAndViewer)->DenseRange(0, 7)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -69,7 +69,7 @@ std::string usage_text() {
       "                  distinct file names (runs are keyed by them)\n"
       "  --scenes DIR    where scene names are looked up (default: the source's scenes/)\n"
       "  --zoo-seed S    generalization: seed of the room zoo (default 1)\n"
-      "  --zoo-rooms N   generalization: rooms per object-count bucket (default 5)\n\n"
+      "  --zoo-rooms N   generalization: rooms per object-count bucket (default 20)\n\n"
       "studies:\n";
   for (const auto& st : experiments::studies()) {
     std::string n = st.name;
@@ -123,7 +123,7 @@ experiments::StudyConfig study_config(const Args& args) {
   config.threads = static_cast<int>(args.integer("threads", 1, 0, 1024));
   config.out = *out;
   config.zoo_seed = static_cast<std::uint64_t>(args.integer("zoo-seed", 1, 0, 1000000000000L));
-  config.zoo_rooms = static_cast<int>(args.integer("zoo-rooms", 5, 1, 1000));
+  config.zoo_rooms = static_cast<int>(args.integer("zoo-rooms", 20, 1, 1000));
 #ifdef HRSPACE_SOURCE_DIR
   config.scenes_dir = std::filesystem::path(HRSPACE_SOURCE_DIR) / "scenes";
 #endif

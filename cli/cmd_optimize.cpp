@@ -101,7 +101,7 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
 constexpr const char* kDesignUsageHead =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
     "                     [--planner PRESET[,ITEM...]] [--reuse LIST] [--weights W]\n"
-    "                     [--disable LIST]\n\n"
+    "                     [--disable LIST] [--rules ada|iso] [--access-goal N]\n\n"
     "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
     "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
     "Writes DIR/layout.json (a scene file), DIR/tours.json, DIR/design.svg, DIR/report.json.\n"
@@ -122,6 +122,9 @@ constexpr const char* kDesignUsageTail =
     "  --disable LIST  turns design-loop switches off: none or a comma list (ablations)\n"
     "  --rules R       accessibility rule set of accessibility.json: ada (default; 2010 ADA\n"
     "                  Standards) or iso (ISO 21542's 1500 mm turning circle, else ADA)\n"
+    "  --access-goal N make the rules a goal: try up to N designs (seeds N0, N0+K, ...,\n"
+    "                  K = --designs) and keep the first whose layout passes --rules, else\n"
+    "                  the one with the fewest failed checks (report.json: access_goal)\n"
 "DIR is created and checked writable before any work. Each file is written to a\n"
     "temporary file and renamed into place once all of a design's files are written.\n"
     "Outputs of an earlier run that this run does not rewrite (numbered design\n"
@@ -193,6 +196,7 @@ struct DesignRequest {
   optimize::PlannerConfig planner;  //!< --planner, --reuse and --disable
   long seed = 1, iterations = 700, designs = 1, threads = 0;
   std::string rules = "ada";  //!< --rules: the accessibility rule set
+  long access_goal = 1;       //!< --access-goal: designs tried per design (1: off)
 };
 
 //! The command's arguments, checked in this order (the first bad one is reported).
@@ -209,6 +213,7 @@ DesignRequest design_request(const Args& args) {
   r.designs = args.integer("designs", 1, 1, 1000);
   r.rules = args.get_or("rules", "ada");
   (void)access::Rules::named(r.rules);  // refused here, before any work
+  r.access_goal = args.integer("access-goal", 1, 1, 100);
   r.threads = args.integer("threads", 0, 0, 1024);
   r.scene_path = args.positional()[0];
   return r;
@@ -275,9 +280,21 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
                           static_cast<int>(r.threads), r.planner);
   const auto progress = progress_bar(
       tty, r.iterations, r.designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
-  optimize::DesignResult result;
+  api::AccessGoalResult goal;
   try {
-    result = optimize::design(scene, options, &g_interrupted, progress);
+    // Try k of design d has seed N + d + k·K, so no two tries share a seed.
+    goal = api::design_for_access(scene, options, r.rules, static_cast<int>(r.access_goal),
+                                  static_cast<std::uint64_t>(r.designs), &g_interrupted, progress,
+                                  [&](int k) {
+                                    if (k > 0 && tty) std::cerr << "\r\033[K" << std::flush;
+                                    if (k > 0)
+                                      std::fprintf(stderr,
+                                                   "hrspace design: accessibility goal: try %d "
+                                                   "of %ld (seed %llu)\n",
+                                                   k + 1, r.access_goal,
+                                                   static_cast<unsigned long long>(
+                                                       options.seed + k * r.designs));
+                                  });
   } catch (const Interrupted&) {
     // Stopped while enumerating the sequences or generating goal poses:
     // there is no design to write (earlier designs of --designs are kept).
@@ -288,9 +305,12 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
                  r.designs > 1 ? " for it" : "");
     return true;
   }
+  const optimize::DesignResult& result = goal.result;
+  options.seed = goal.seed;
   if (tty) std::cerr << "\r\033[K" << std::flush;
   const std::filesystem::path dir = design_dir(r, d);
   optimize::RunInfo info{options.seed, r.planner.name(), static_cast<int>(r.iterations)};
+  if (r.access_goal > 1) info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
   std::string access_line;
   const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
   api::write_design_files(result, info, extras, dir);
@@ -320,7 +340,7 @@ void finish_outputs(const DesignRequest& r, const std::vector<std::string>& svgs
 
 int cmd_design(const Argv& argv) {
   const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
-                         "weights", "disable", "rules"});
+                         "weights", "disable", "rules", "access-goal"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsageHead << optimize::PlannerConfig::help()
               << kDesignUsageTail;

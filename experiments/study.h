@@ -36,7 +36,7 @@ struct StudyConfig {
   std::filesystem::path scenes_dir;  //!< where room names are looked up
   std::filesystem::path out;         //!< root output directory
   std::uint64_t zoo_seed = 1;        //!< generalization: seed of the room zoo
-  int zoo_rooms = 5;                 //!< generalization: rooms per object-count bucket
+  int zoo_rooms = 20;                //!< generalization: rooms per object-count bucket
 };
 
 //! The scene file of a room: a .json path as given, else

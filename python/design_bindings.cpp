@@ -70,7 +70,8 @@ py::dict step_dict(const optimize::DesignStep& s, const geometry::Scene& scene, 
 py::object run_design(const PyScene& scene, long long seed, long long iterations,
                       const std::string& planner, const std::optional<std::string>& reuse,
                       const std::optional<std::string>& disable, long long threads,
-                      const std::string& rules, const py::object& progress) {
+                      const std::string& rules, const py::object& progress,
+                      long long access_goal) {
   scene.validate();
   (void)access::Rules::named(rules, "rules");
   geometry::require_sequences(scene.scene, scene.label);
@@ -79,6 +80,7 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
       static_cast<std::uint64_t>(in_range("seed", seed, 0, 1LL << 53)),
       static_cast<int>(in_range("iterations", iterations, 0, 100000000)),
       static_cast<int>(in_range("threads", threads, 0, 1024)), choice);
+  const int tries = static_cast<int>(in_range("access-goal", access_goal, 1, 100));
 
   std::atomic<bool> stop{false};
   std::optional<py::error_already_set> pending;  // a Python exception that stopped the run
@@ -100,12 +102,15 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
       };
 
   auto design = std::make_unique<PyDesign>();
+  api::AccessGoalResult goal;
   {
     py::gil_scoped_release release;
-    design->result = optimize::design(scene.scene, options, &stop, step_done);
+    goal = api::design_for_access(scene.scene, options, rules, tries, 1, &stop, step_done);
   }
   if (failure) std::rethrow_exception(failure);
-  design->info = {options.seed, choice.name(), static_cast<int>(iterations)};
+  design->result = std::move(goal.result);
+  design->info = {goal.seed, choice.name(), static_cast<int>(iterations)};
+  if (tries > 1) design->info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
   design->extras = api::attach_extras(design->result, rules, design->info);
   design->label = scene.label;
   design->tours = json_loads(optimize::tours_document(design->result))["tours"];
@@ -207,7 +212,8 @@ void bind_design(py::module_& m) {
       "planner (a preset, then optional comma items, as --planner), reuse (replaces the "
       "proposed planner's techniques, as --reuse), disable (design-loop switches to turn off, "
       "as --disable), threads (0: all cores; results do not depend on it) and rules (the "
-      "accessibility rule set, ada or iso, as --rules) are the "
+      "accessibility rule set, ada or iso, as --rules) and access_goal (designs tried until "
+      "one passes the rules, as --access-goal) are the "
       "command's options. progress(step) is called after every iteration with a dict (the "
       "fields of report.json's trace: iteration from 1, iterations, temperature, object, valid, "
       "accepted, proposed, current, best, planning_ms). The GIL is released while it runs. "
@@ -218,7 +224,8 @@ void bind_design(py::module_& m) {
   m.def("design", &run_design, py::arg("scene"), py::kw_only(), py::arg("seed") = 1,
         py::arg("iterations") = 700, py::arg("planner") = "default",
         py::arg("reuse") = py::none(), py::arg("disable") = py::none(), py::arg("threads") = 0,
-        py::arg("rules") = "ada", py::arg("progress") = py::none(), doc.c_str());
+        py::arg("rules") = "ada", py::arg("progress") = py::none(), py::arg("access_goal") = 1,
+        doc.c_str());
 }
 
 }  // namespace hrs::python

@@ -206,6 +206,7 @@ def design(
     threads: int = 0,
     rules: str = "ada",
     progress: Optional[Callable[[Dict[str, Any]], None]] = None,
+    access_goal: int = 1,
 ) -> Design:
     """Optimizes the layout as `hrspace design`; Ctrl-C raises KeyboardInterrupt whose
     `design` attribute holds the best design so far."""

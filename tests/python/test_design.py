@@ -107,3 +107,49 @@ def test_save_into_an_unwritable_place_is_an_error(tmp_path):
     with pytest.raises(ValueError) as e:
         result.save(blocker / "out")
     assert str(e.value) == cli_error("design", BEDROOM, "--out", blocker / "out")
+
+
+def access_failures(a):
+    """The failed checks of an accessibility.json, counted here from its fields."""
+    return ((a["tours"]["total"] - a["tours"]["found"])
+            + sum(not r["pass"] for r in a["routes"])
+            + sum(not s["clear_floor_space"] for s in a["stops"])
+            + (not a["turning_space"]["pass"]) + (not a["door"]["pass"]))
+
+
+def test_access_goal_keeps_the_first_design_that_passes_or_the_fewest_failures(tmp_path):
+    scene = hrspace.Scene(BEDROOM)
+    goal = hrspace.design(scene, seed=1, iterations=50, threads=1, access_goal=4)
+    record = goal.report["access_goal"]
+    tried = record["tried"]
+    assert 1 <= record["tries"] == len(tried) <= 4
+    assert [t["seed"] for t in tried] == list(range(1, len(tried) + 1))
+    # Each try is the plain design of its seed: its accessibility, counted independently.
+    plain = {}
+    for t in tried:
+        d = hrspace.design(scene, seed=t["seed"], iterations=50, threads=1)
+        plain[t["seed"]] = d
+        assert t["pass"] == d.accessibility["pass"]
+        assert t["failures"] == access_failures(d.accessibility)
+        assert t["cost"] == pytest.approx(d.cost, rel=1e-12)
+    # Tries stop at the first pass; the kept one has the fewest failures, then the lower cost.
+    assert all(not t["pass"] for t in tried[:-1])
+    kept = min(tried, key=lambda t: (t["failures"], t["cost"]))
+    assert record["kept_seed"] == kept["seed"] == goal.report["seed"]
+    assert record["pass"] == kept["pass"] == goal.accessibility["pass"]
+    assert goal.layout == plain[kept["seed"]].layout
+    # The command keeps the same design, byte for byte.
+    goal.save(tmp_path / "py")
+    status, _, err = run_cli("design", BEDROOM, "--out", tmp_path / "cli", "--seed", 1,
+                             "--iterations", 50, "--threads", 1, "--access-goal", 4)
+    assert status == 0, err
+    for name in ["layout.json", "tours.json", "design.svg", "accessibility.json", "design.html"]:
+        assert (tmp_path / "py" / name).read_bytes() == (tmp_path / "cli" / name).read_bytes(), name
+    cli_report = json.loads((tmp_path / "cli" / "report.json").read_text())
+    assert cli_report["access_goal"] == record
+
+
+def test_access_goal_out_of_range_is_refused():
+    with pytest.raises(ValueError, match="access-goal"):
+        hrspace.design(hrspace.Scene(BEDROOM), iterations=1, access_goal=0)
+    assert "--access-goal" in cli_error("design", BEDROOM, "--out", "/tmp/unused", "--access-goal", "0")
