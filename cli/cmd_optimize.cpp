@@ -15,6 +15,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <functional>
 #include <iostream>
 #include <iterator>
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include "access/accessibility.h"
+#include "api/design_request.h"
 #include "api/operations.h"
 #include "cli/args.h"
 #include "cli/commands.h"
@@ -141,19 +143,6 @@ std::string format_eta(double seconds) {
   return buf;
 }
 
-//! --weights L,R,C[,D,A]: overrides the scene's path (and interior) weights.
-void apply_weights(const Args& args, geometry::Scene& scene) {
-  const auto w = args.get("weights");
-  if (!w) return;
-  const bool five = std::count(w->begin(), w->end(), ',') == 4;
-  const std::vector<double> v = parse_numbers(*w, five ? 5 : 3, "--weights");
-  for (double x : v)
-    if (!std::isfinite(x) || x < 0.0 || x > 1e6)
-      throw InputError("--weights '" + *w + "': each weight must be finite, >= 0 and <= 1e6");
-  scene.weights.path = {v[0], v[1], v[2]};
-  if (five) scene.weights.interior = {v[3], v[4]};
-}
-
 //! A progress bar with the best cost and ETA on stderr (terminal only).
 std::function<void(const optimize::DesignStep&)> progress_bar(bool tty, long iterations,
                                                               const std::string& prefix) {
@@ -189,39 +178,53 @@ void print_summary(const std::filesystem::path& dir, const optimize::DesignResul
       result.stopped ? "  (interrupted)" : "");
 }
 
-//! What one `hrspace design` command asks for.
+//! What one `hrspace design` command asks for: the shared request
+//! (api/design_request.h) and where its scene and outputs are.
 struct DesignRequest {
   std::string scene_path;  //!< a scene file, or "-" for stdin
   std::string out;
-  optimize::PlannerConfig planner;  //!< --planner, --reuse and --disable
-  long seed = 1, iterations = 700, designs = 1, threads = 0;
-  std::string rules = "ada";  //!< --rules: the accessibility rule set
-  long access_goal = 1;       //!< --access-goal: designs tried per design (1: off)
+  api::DesignRequest request;
+  optimize::PlannerConfig planner;  //!< request.planner_config()
+  long seed = 1, iterations = 700, designs = 1, threads = 0, access_goal = 1;
+  std::string rules = "ada";
 };
 
-//! The command's arguments, checked in this order (the first bad one is reported).
+//! The command's arguments translated into an api::DesignRequest, which
+//! checks them (the first bad one is reported, with the same message as
+//! from Python).
 DesignRequest design_request(const Args& args) {
   args.expect_positional(1, "hrspace design SCENE --out DIR [options] (see --help)");
   const auto out = args.get("out");
   if (!out) throw InputError("--out DIR is required (see --help)");
   DesignRequest r;
   r.out = *out;
-  r.planner = api::design_planner(args.get_or("planner", "default"), args.get("reuse"),
-                                  args.get("disable"));
-  r.seed = args.integer("seed", 1, 0, 1L << 53);
-  r.iterations = args.integer("iterations", 700, 0, 100000000);
-  r.designs = args.integer("designs", 1, 1, 1000);
-  r.rules = args.get_or("rules", "ada");
-  (void)access::Rules::named(r.rules);  // refused here, before any work
-  r.access_goal = args.integer("access-goal", 1, 1, 100);
-  r.threads = args.integer("threads", 0, 0, 1024);
+  api::DesignRequest& q = r.request;
+  q.planner = args.get_or("planner", "default");
+  q.reuse = args.get("reuse");
+  q.disable = args.get("disable");
+  q.weights = args.get("weights");
+  constexpr long kAny = std::numeric_limits<long>::max();
+  q.seed = args.integer("seed", 1, -kAny, kAny);
+  q.iterations = args.integer("iterations", 700, -kAny, kAny);
+  q.designs = args.integer("designs", 1, -kAny, kAny);
+  q.rules = args.get_or("rules", "ada");
+  q.access_goal = args.integer("access-goal", 1, -kAny, kAny);
+  q.threads = args.integer("threads", 0, -kAny, kAny);
+  q.validate();
+  r.planner = q.planner_config();
+  r.seed = q.seed;
+  r.iterations = q.iterations;
+  r.designs = q.designs;
+  r.threads = q.threads;
+  r.rules = q.rules;
+  r.access_goal = q.access_goal;
   r.scene_path = args.positional()[0];
   return r;
 }
 
 //! Reads the scene and checks it has sequences to tour, checks --out, then
 //! applies --weights: everything that can fail on input, before any work.
-geometry::Scene prepare_design(const DesignRequest& r, const Args& args) {
+geometry::Scene prepare_design(const DesignRequest& r) {
   const std::string& path = r.scene_path;
   geometry::Scene scene =
       path == "-" ? geometry::parse_scene(read_input("-"), "stdin") : geometry::load_scene(path);
@@ -232,7 +235,7 @@ geometry::Scene prepare_design(const DesignRequest& r, const Args& args) {
   optimize::require_writable_directory(r.out);
   remove_stale_outputs(r.out, r.designs > 1, r.designs,
                        true);  // refuses foreign files now, not at the end
-  apply_weights(args, scene);
+  r.request.apply_weights(scene);
   return scene;
 }
 
@@ -275,9 +278,7 @@ std::filesystem::path design_dir(const DesignRequest& r, long d) {
 bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bool tty,
                 std::vector<std::string>& svgs) {
   // The same options as the Python module's design() (api/operations.h).
-  optimize::DesignOptions options =
-      api::design_options(static_cast<std::uint64_t>(r.seed + d), static_cast<int>(r.iterations),
-                          static_cast<int>(r.threads), r.planner);
+  optimize::DesignOptions options = r.request.options(d);
   const auto progress = progress_bar(
       tty, r.iterations, r.designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
   api::AccessGoalResult goal;
@@ -347,7 +348,7 @@ int cmd_design(const Argv& argv) {
     return 0;
   }
   const DesignRequest request = design_request(args);
-  const geometry::Scene scene = prepare_design(request, args);
+  const geometry::Scene scene = prepare_design(request);
   // One writer per --out: a second design into it is refused, not mixed in.
   const optimize::DirectoryLock lock(request.out);
   StopSignalHandlers handlers;

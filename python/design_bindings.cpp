@@ -22,6 +22,7 @@
 #include <string>
 
 #include "access/accessibility.h"
+#include "api/design_request.h"
 #include "api/operations.h"
 #include "geometry/error.h"
 #include "optimize/design.h"
@@ -39,13 +40,6 @@ struct PyDesign {
   std::string label;
   py::object tours, report;  //!< parsed once
 };
-
-long long in_range(const std::string& name, long long v, long long min, long long max) {
-  if (v < min || v > max)
-    throw InputError("--" + name + ": " + std::to_string(v) + " is outside [" +
-                     std::to_string(min) + ", " + std::to_string(max) + "]");
-  return v;
-}
 
 //! One iteration as progress() gets it: the fields of report.json's trace.
 py::dict step_dict(const optimize::DesignStep& s, const geometry::Scene& scene, int iterations) {
@@ -67,20 +61,43 @@ py::dict step_dict(const optimize::DesignStep& s, const geometry::Scene& scene, 
   return d;
 }
 
+//! `weights` as --weights text: None, a string "L,R,C[,D,A]" or a sequence
+//! of 3 or 5 numbers (written exactly, so the shared parser sees the values).
+std::optional<std::string> weights_text(const py::object& weights) {
+  if (weights.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(weights)) return weights.cast<std::string>();
+  std::string text;
+  for (const py::handle item : weights) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", item.cast<double>());
+    text += (text.empty() ? "" : ",") + std::string(buf);
+  }
+  return text;
+}
+
 py::object run_design(const PyScene& scene, long long seed, long long iterations,
                       const std::string& planner, const std::optional<std::string>& reuse,
                       const std::optional<std::string>& disable, long long threads,
                       const std::string& rules, const py::object& progress,
-                      long long access_goal) {
+                      long long access_goal, const py::object& weights, long long designs) {
   scene.validate();
-  (void)access::Rules::named(rules, "rules");
-  geometry::require_sequences(scene.scene, scene.label);
-  const optimize::PlannerConfig choice = api::design_planner(planner, reuse, disable);
-  const optimize::DesignOptions options = api::design_options(
-      static_cast<std::uint64_t>(in_range("seed", seed, 0, 1LL << 53)),
-      static_cast<int>(in_range("iterations", iterations, 0, 100000000)),
-      static_cast<int>(in_range("threads", threads, 0, 1024)), choice);
-  const int tries = static_cast<int>(in_range("access-goal", access_goal, 1, 100));
+  // The same request, checks and messages as `hrspace design` (api/design_request.h).
+  api::DesignRequest request;
+  request.planner = planner;
+  request.reuse = reuse;
+  request.disable = disable;
+  request.weights = weights_text(weights);
+  request.seed = seed;
+  request.iterations = iterations;
+  request.designs = designs;
+  request.threads = threads;
+  request.rules = rules;
+  request.access_goal = access_goal;
+  request.validate();
+  geometry::Scene working = scene.scene;
+  request.apply_weights(working);
+  geometry::require_sequences(working, scene.label);
+  const optimize::PlannerConfig choice = request.planner_config();
 
   std::atomic<bool> stop{false};
   std::optional<py::error_already_set> pending;  // a Python exception that stopped the run
@@ -90,7 +107,8 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
         py::gil_scoped_acquire gil;
         if (stop.load()) return;
         try {
-          if (!progress.is_none()) progress(step_dict(step, scene.scene, options.iterations));
+          if (!progress.is_none())
+            progress(step_dict(step, working, static_cast<int>(request.iterations)));
           if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         } catch (py::error_already_set& e) {
           pending.emplace(std::move(e));
@@ -101,28 +119,36 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
         }
       };
 
-  auto design = std::make_unique<PyDesign>();
-  api::AccessGoalResult goal;
-  {
-    py::gil_scoped_release release;
-    goal = api::design_for_access(scene.scene, options, rules, tries, 1, &stop, step_done);
+  py::list out;
+  for (long long d = 0; d < request.designs && !stop.load(); ++d) {
+    const optimize::DesignOptions options = request.options(d);
+    auto design = std::make_unique<PyDesign>();
+    api::AccessGoalResult goal;
+    {
+      py::gil_scoped_release release;
+      // Try k of design d has seed + d + k·designs, as with the command.
+      goal = api::design_for_access(working, options, rules, static_cast<int>(request.access_goal),
+                                    static_cast<std::uint64_t>(request.designs), &stop, step_done);
+    }
+    if (failure) std::rethrow_exception(failure);
+    design->result = std::move(goal.result);
+    design->info = {goal.seed, choice.name(), static_cast<int>(request.iterations)};
+    if (request.access_goal > 1)
+      design->info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
+    design->extras = api::attach_extras(design->result, rules, design->info);
+    design->label = scene.label;
+    design->tours = json_loads(optimize::tours_document(design->result))["tours"];
+    design->report = json_loads(optimize::report_document(design->result, design->info));
+    out.append(py::cast(std::move(design)));
   }
-  if (failure) std::rethrow_exception(failure);
-  design->result = std::move(goal.result);
-  design->info = {goal.seed, choice.name(), static_cast<int>(iterations)};
-  if (tries > 1) design->info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
-  design->extras = api::attach_extras(design->result, rules, design->info);
-  design->label = scene.label;
-  design->tours = json_loads(optimize::tours_document(design->result))["tours"];
-  design->report = json_loads(optimize::report_document(design->result, design->info));
-  py::object out = py::cast(std::move(design));
+  py::object result = request.designs == 1 ? py::object(out[0]) : py::object(out);
   // A Ctrl-C during the last iteration (or a run of no iterations).
   if (!pending && PyErr_CheckSignals() != 0) pending.emplace();
   if (pending) {
-    py::setattr(pending->value(), "design", out);
+    py::setattr(pending->value(), "design", result);
     throw std::move(*pending);
   }
-  return out;
+  return result;
 }
 
 //! hrspace.Design: the result of design() and its files.
@@ -212,8 +238,10 @@ void bind_design(py::module_& m) {
       "planner (a preset, then optional comma items, as --planner), reuse (replaces the "
       "proposed planner's techniques, as --reuse), disable (design-loop switches to turn off, "
       "as --disable), threads (0: all cores; results do not depend on it) and rules (the "
-      "accessibility rule set, ada or iso, as --rules) and access_goal (designs tried until "
-      "one passes the rules, as --access-goal) are the "
+      "accessibility rule set, ada or iso, as --rules), access_goal (designs tried until "
+      "one passes the rules, as --access-goal), weights (3 or 5 numbers, or their text, as "
+      "--weights) and designs (as --designs: seeds seed … seed + designs - 1; a list of "
+      "Designs when designs > 1) are the "
       "command's options. progress(step) is called after every iteration with a dict (the "
       "fields of report.json's trace: iteration from 1, iterations, temperature, object, valid, "
       "accepted, proposed, current, best, planning_ms). The GIL is released while it runs. "
@@ -225,7 +253,7 @@ void bind_design(py::module_& m) {
         py::arg("iterations") = 700, py::arg("planner") = "default",
         py::arg("reuse") = py::none(), py::arg("disable") = py::none(), py::arg("threads") = 0,
         py::arg("rules") = "ada", py::arg("progress") = py::none(), py::arg("access_goal") = 1,
-        doc.c_str());
+        py::arg("weights") = py::none(), py::arg("designs") = 1, doc.c_str());
 }
 
 }  // namespace hrs::python

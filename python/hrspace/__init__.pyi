@@ -207,6 +207,8 @@ def design(
     rules: str = "ada",
     progress: Optional[Callable[[Dict[str, Any]], None]] = None,
     access_goal: int = 1,
-) -> Design:
+    weights: Optional[Union[str, Sequence[float]]] = None,
+    designs: int = 1,
+) -> Union[Design, List[Design]]:
     """Optimizes the layout as `hrspace design`; Ctrl-C raises KeyboardInterrupt whose
     `design` attribute holds the best design so far."""

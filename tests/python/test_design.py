@@ -153,3 +153,42 @@ def test_access_goal_out_of_range_is_refused():
     with pytest.raises(ValueError, match="access-goal"):
         hrspace.design(hrspace.Scene(BEDROOM), iterations=1, access_goal=0)
     assert "--access-goal" in cli_error("design", BEDROOM, "--out", "/tmp/unused", "--access-goal", "0")
+
+
+@pytest.mark.parametrize("kwargs, options", [
+    ({"seed": -1}, ["--seed", "-1"]),
+    ({"iterations": -5}, ["--iterations", "-5"]),
+    ({"designs": 0}, ["--designs", "0"]),
+    ({"threads": 5000}, ["--threads", "5000"]),
+    ({"rules": "din"}, ["--rules", "din"]),
+    ({"access_goal": 101}, ["--access-goal", "101"]),
+    ({"weights": "1,2"}, ["--weights", "1,2"]),
+    ({"weights": "1,x,1"}, ["--weights", "1,x,1"]),
+    ({"weights": [1, -1, 1]}, ["--weights", "1,-1,1"]),
+    ({"planner": "fast"}, ["--planner", "fast"]),
+    ({"planner": "baseline", "disable": "frobnicate"}, ["--planner", "baseline", "--disable", "frobnicate"]),
+])
+def test_the_command_and_python_refuse_a_request_with_the_same_message(tmp_path, kwargs, options):
+    with pytest.raises(ValueError) as e:
+        hrspace.design(hrspace.Scene(BEDROOM), **kwargs)
+    assert str(e.value) == cli_error("design", BEDROOM, "--out", tmp_path / "d", *options)
+
+
+def test_weights_and_designs_equal_the_command(tmp_path):
+    scene = hrspace.Scene(BEDROOM)
+    results = hrspace.design(scene, seed=5, iterations=8, threads=1, weights=[2, 0.5, 1, 1, 3],
+                             designs=2)
+    assert isinstance(results, list) and len(results) == 2
+    assert [r.report["seed"] for r in results] == [5, 6]
+    status, _, err = run_cli("design", BEDROOM, "--out", tmp_path / "cli", "--seed", 5,
+                             "--iterations", 8, "--threads", 1, "--weights", "2,0.5,1,1,3",
+                             "--designs", 2)
+    assert status == 0, err
+    for k, r in enumerate(results, start=1):
+        r.save(tmp_path / "py" / str(k))
+        for name in ["layout.json", "tours.json", "design.svg", "accessibility.json", "design.html"]:
+            ours = (tmp_path / "py" / str(k) / name).read_bytes()
+            assert ours == (tmp_path / "cli" / str(k) / name).read_bytes(), (k, name)
+    # The weights reached the objective: the same run with the scene's own weights differs.
+    plain = hrspace.design(scene, seed=5, iterations=8, threads=1)
+    assert plain.initial_cost != pytest.approx(results[0].initial_cost)
