@@ -26,6 +26,7 @@ const std::vector<Study>& studies() {
         shared::ao_graph_study(),       shared::designs_study(),
         shared::hard_rooms_study(),     shared::design_loop_study(),
         shared::method_study(),         shared::generalization_study(),
+        shared::tradeoff_study(),
     };
     // A run's identity (runner.h run_identity): its room's scene digest and
     // its planner's switches, unless the study reads more than that.

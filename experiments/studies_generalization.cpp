@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 #include "experiments/room_zoo.h"
 #include "experiments/stats.h"
@@ -19,6 +20,9 @@ namespace hrs::experiments {
 namespace {
 
 using shared::design_options;
+using shared::load_room;
+using shared::rooms_of;
+using shared::room_label;
 using shared::design_output;
 using shared::int_param;
 using shared::make_run;
@@ -146,6 +150,115 @@ Row generalization_identity(const RunSpec& spec, const StudyConfig& config) {
   return id;
 }
 
+// --- tradeoff -----------------------------------------------------------------
+
+//! The weightings of the trade-off sweep: the scene's own weights, the
+//! interior (preference) weights halved, doubled and quadrupled, and the
+//! path weights halved.
+std::vector<std::string> tradeoff_weightings(const StudyConfig& c) {
+  if (c.quick) return {"scene", "interior=2"};
+  return {"scene", "interior=0.5", "interior=2", "interior=4", "path=0.5"};
+}
+
+std::vector<RunSpec> tradeoff_runs(const StudyConfig& c) {
+  std::vector<RunSpec> runs;
+  const int seeds = std::min(c.seeds, c.quick ? 1 : 2);
+  // Rooms: the shipped rooms with preferences, and zoo rooms of 9-16
+  // objects with their witness (the generalization study's rooms 1-4).
+  std::vector<std::pair<std::string, int>> rooms;
+  for (const auto& room : rooms_of(c, c.quick ? std::vector<std::string>{"bedroom"}
+                                              : std::vector<std::string>{"bedroom", "office",
+                                                                         "living_room"}))
+    rooms.emplace_back(room, 0);
+  for (int r = 1; r <= (c.quick ? 1 : 4); ++r) rooms.emplace_back("zoo", 200 + r);
+  for (const auto& [room, index] : rooms)
+    for (const auto& weighting : tradeoff_weightings(c))
+      for (int seed = 1; seed <= seeds; ++seed) {
+        // Zoo rooms have no scene file: "label" names every room, "room"
+        // only the shipped ones (whose files the command checks up front).
+        std::vector<std::pair<std::string, std::string>> p = {
+            {"label", index ? "zoo_" + std::to_string(c.zoo_seed) + "_" + std::to_string(index)
+                            : room_label(room)},
+            {"weighting", weighting},
+            {"seed", std::to_string(seed)},
+            {"planner", "all"}};
+        if (!index) p.emplace_back("room", room);
+        if (index) {
+          p.emplace_back("bucket", bucket_name(kBuckets[1]));
+          p.emplace_back("zoo_seed", std::to_string(c.zoo_seed));
+          p.emplace_back("index", std::to_string(index));
+        }
+        runs.push_back(make_run("tradeoff", p));
+      }
+  return runs;
+}
+
+//! Scales the scene's interior or path weights as the weighting says.
+void apply_weighting(const std::string& weighting, geometry::Scene& scene) {
+  if (weighting == "scene") return;
+  const std::size_t eq = weighting.find('=');
+  const double f = std::stod(weighting.substr(eq + 1));
+  if (weighting.starts_with("interior"))
+    for (double& w : scene.weights.interior) w *= f;
+  else
+    for (double& w : scene.weights.path) w *= f;
+}
+
+RunOutput tradeoff_run(const RunSpec& spec, RunContext& context) {
+  const bool zoo = spec.params.get("index").has_value();
+  geometry::Scene scene, witness;
+  if (zoo)
+    std::tie(scene, witness) = zoo_room(spec, context);
+  else
+    scene = load_room(context.config, param(spec, "room"));
+  const std::string weighting = param(spec, "weighting");
+  apply_weighting(weighting, scene);
+  optimize::DesignOptions o =
+      design_options(context.config, "all", static_cast<std::uint64_t>(int_param(spec, "seed")));
+  const optimize::DesignResult r = optimize::design(scene, o, context.stop);
+  RunOutput out = design_output(r);
+  if (out.stopped) return out;
+  Row& m = out.measures;
+  m.set("prefs_met", static_cast<long>(r.preferences.met));
+  m.set("prefs_total", static_cast<long>(r.preferences.total));
+  m.set("prefs_share", r.preferences.total > 0
+                           ? static_cast<double>(r.preferences.met) / r.preferences.total
+                           : 1.0);
+  m.set("worst_angle_deg", r.preferences.worst_angle * 180.0 / M_PI);
+  m.set("cost_path", r.final.path());
+  m.set("cost_interior", r.final.interior());
+  if (zoo) {
+    // The search gap: the planted witness under the same weights and planner.
+    apply_weighting(weighting, witness);
+    optimize::DesignOptions w = o;
+    w.iterations = 0;
+    const optimize::DesignResult wr = optimize::design(witness, w, context.stop);
+    if (context.stop && context.stop->load()) {
+      out.stopped = true;
+      return out;
+    }
+    m.set("cost_witness", wr.initial.total());
+    m.set("witness_tours_found", wr.initial.tours_found);
+    m.set("cost_vs_witness", wr.initial.total() > 0 ? r.final.total() / wr.initial.total() : 0.0);
+    m.set("cost_le_witness", r.final.total() <= wr.initial.total() ? 1L : 0L);
+  }
+  return out;
+}
+
+Table tradeoff_summary(const Table& runs) {
+  return summarize_table(runs, {"label", "weighting"},
+                         {"prefs_share", "prefs_met", "prefs_total", "worst_angle_deg",
+                          "tours_found", "tours_total", "mean_tour_m", "cost_path",
+                          "cost_interior", "cost_final", "cost_witness", "cost_vs_witness",
+                          "cost_le_witness", "total_s"});
+}
+
+//! Zoo rooms are identified as in generalization, shipped rooms by their file.
+Row tradeoff_identity(const RunSpec& spec, const StudyConfig& config) {
+  if (spec.params.get("index")) return generalization_identity(spec, config);
+  return shared::run_identity(spec, config);
+}
+
 }  // namespace
 
 Study shared::generalization_study() {
@@ -156,6 +269,19 @@ Study shared::generalization_study() {
           generalization_run,
           generalization_summary};
   s.identity = generalization_identity;
+  return s;
+}
+
+Study shared::tradeoff_study() {
+  Study s{"tradeoff",
+          "beyond the paper: preferences against tours under other weightings, and the "
+          "search gap to a planted witness",
+          "default-preset designs of the shipped rooms and zoo rooms at the scene's weights, "
+          "the interior weights x0.5, x2, x4 and the path weights x0.5",
+          tradeoff_runs,
+          tradeoff_run,
+          tradeoff_summary};
+  s.identity = tradeoff_identity;
   return s;
 }
 

@@ -82,5 +82,6 @@ Study design_loop_study();
 Study method_study();
 // studies_generalization.cpp: designs in rooms of the room zoo.
 Study generalization_study();
+Study tradeoff_study();  //!< studies_generalization.cpp
 
 }  // namespace hrs::experiments::shared

@@ -360,6 +360,88 @@ def fig_generalization(root, figs):
     return save(fig, figs, "generalization")
 
 
+def fig_tradeoff(root, figs):
+    """Preferences met and tours found per room under each weighting."""
+    runs = read_csv(os.path.join(root, "tradeoff", "runs.csv"))
+    if not runs:
+        return []
+    labels, weightings = [], []
+    for r in runs:
+        if r["label"] not in labels:
+            labels.append(r["label"])
+        if r["weighting"] not in weightings:
+            weightings.append(r["weighting"])
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8))
+    xs = list(range(len(weightings)))
+    for label in labels:
+        ps, ts = [], []
+        for w in weightings:
+            rw = by(runs, label=label, weighting=w)
+            met = sum(num(r, "prefs_met") for r in rw)
+            total = sum(num(r, "prefs_total") for r in rw)
+            ps.append(100 * met / total if total else float("nan"))
+            ts.append(mean_sd([num(r, "tours_found") for r in rw])[0] if rw else float("nan"))
+        ax1.plot(xs, ps, marker="o", label=label)
+        ax2.plot(xs, ts, marker="o", label=label)
+    for ax in (ax1, ax2):
+        ax.set_xticks(xs)
+        ax.set_xticklabels(weightings, fontsize=8)
+        ax.set_xlabel("weighting (scene's weights scaled)")
+    ax1.axhline(90, color="grey", lw=0.8, ls="--")
+    ax1.set_ylabel("preference terms met (%)")
+    ax1.set_ylim(-5, 105)
+    ax2.set_ylabel("tours found (mean over seeds)")
+    ax2.set_ylim(-0.5, 10.5)
+    ax2.legend(fontsize=7, ncol=2)
+    fig.suptitle("Trade-off: preferences against tours (default preset; dashed: the 90 % target)")
+    fig.tight_layout()
+    return save(fig, figs, "tradeoff")
+
+
+def tradeoff_section(root):
+    """REPRODUCTION.md lines on the trade-off study: per room and weighting."""
+    runs = read_csv(os.path.join(root, "tradeoff", "runs.csv"))
+    if not runs:
+        return []
+    commits = sorted({r.get("commit", "?") for r in runs})
+    labels, weightings = [], []
+    for r in runs:
+        if r["label"] not in labels:
+            labels.append(r["label"])
+        if r["weighting"] not in weightings:
+            weightings.append(r["weighting"])
+    lines = [
+        "",
+        "## Beyond the paper: preferences against tours (the trade-off study)",
+        "",
+        f"The `tradeoff` study at commit `{', '.join(commits)}`: default-preset designs "
+        f"({runs[0].get('iterations', '?')} iterations) of the shipped rooms and of four zoo rooms (9-16 objects) at the scene's "
+        "weights and with the interior (preference) or path weights scaled. Per room and "
+        "weighting over the seeds: preference terms met, tours found (mean), mean tour length, "
+        "and for zoo rooms the search gap, the design's cost over the planted witness's under "
+        "the same weights (mean ± sd; <= 1 means the search found a layout at least as good).",
+        "",
+        "| room | weighting | runs | preference terms met | tours found | tour (m) | cost / witness |",
+        "|---|---|---|---|---|---|---|",
+    ]
+    for label in labels:
+        for w in weightings:
+            rw = by(runs, label=label, weighting=w)
+            if not rw:
+                continue
+            met = sum(int(num(r, "prefs_met")) for r in rw)
+            total = sum(int(num(r, "prefs_total")) for r in rw)
+            t = mean_sd([num(r, "tours_found") for r in rw])
+            m = mean_sd([num(r, "mean_tour_m") for r in rw])
+            gap = "—"
+            if rw[0].get("cost_vs_witness"):
+                g = mean_sd([num(r, "cost_vs_witness") for r in rw])
+                gap = fmt(g[0], g[1])
+            lines.append(f"| {label} | {w} | {len(rw)} | {met}/{total} = "
+                         f"{100 * met / max(total, 1):.0f} % | {t[0]:.1f} | {m[0]:.2f} | {gap} |")
+    return lines
+
+
 def zoo_section(root):
     """REPRODUCTION.md lines on the room zoo (beyond the paper): per bucket and
     planner, tours, preferences, the search gap to the planted witness, time."""
@@ -378,7 +460,7 @@ def zoo_section(root):
         f"The `generalization` study at commit `{', '.join(commits)}`: zoo rooms (`hrspace "
         "generate`, zoo seed 1) planted with a layout whose tours all exist and that meets "
         "every preference (the witness), then scrambled; one design per room and planner, "
-        "700 iterations, one planning thread, two designs at a time. Targets (issues): "
+        f"{runs[0].get('iterations', '?')} iterations, one planning thread, two designs at a time. Targets (issues): "
         ">= 95 % of designs with >= 9/10 tours in every bucket, no design over 30 s and a "
         "mean <= 15 s; >= 90 % of the preference terms met, no angle preference more than 20° "
         "off; cost <= the witness's in >= 90 % of designs. Intervals: Wilson 95 %.",
@@ -985,6 +1067,7 @@ def write_reproduction(root, path, command):
     if not rows:
         lines.append("| (no study outputs found) | | | | |")
     lines += zoo_section(root)
+    lines += tradeoff_section(root)
     lines.append("")
     with open(path, "w") as f:
         f.write("\n".join(lines))
@@ -1005,7 +1088,8 @@ def main():
     figs = os.path.join(a.out, "figures")
     written = []
     for f in (fig_timing, fig_trace, fig_rs_decomposition, fig_rrt_iterations, fig_sensitivity,
-              fig_small_room, fig_ao_graph, fig_designs, fig_method, fig_generalization):
+              fig_small_room, fig_ao_graph, fig_designs, fig_method, fig_generalization,
+              fig_tradeoff):
         written += f(a.out, figs)
     rep = os.path.join(a.out, "REPRODUCTION.md")
     rows = write_reproduction(a.out, rep, a.command)

@@ -33,7 +33,7 @@ other options, scenes or code is refused (exit 2), never mixed in.
                the code under geometry/, rs/, planning/ and optimize/ at the
                commit it was made from equals HEAD's, else "stale" (exit 1)
   STUDY ...    timing rs_decomposition rrt_iterations sensitivity small_room ao_graph designs
-               hard_rooms design_loop method generalization
+               hard_rooms design_loop method generalization tradeoff
 
 Environment: HRSPACE_BIN uses that hrspace binary instead of building one.
 USAGE

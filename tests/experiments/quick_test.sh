@@ -54,7 +54,7 @@ if alphas != {"scene", "uniform"}:
 figures = ["timing", "rs_partition", "rs_decomposition_time", "rrt_iterations", "rrt_threshold",
            "small_room_time", "small_room_designs", "ao_graph_designs", "designs_cover",
            "fig1_weights", "ao_graphs", "goal_poses", "generalization", "timing_trace", "sensitivity",
-           "designs_cover_paper"]
+           "designs_cover_paper", "tradeoff"]
 for name in figures:
     for ext, magic in (("png", b"\x89PNG\r\n\x1a\n"), ("svg", b"<svg")):
         p = os.path.join(root, "figures", f"{name}.{ext}")
