@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -81,6 +83,39 @@ std::pair<geometry::Scene, geometry::Scene> zoo_room(const RunSpec& spec, const 
   return {room.scene, room.witness};
 }
 
+//! The preferences half of a design (optimize/preferences.h, default tolerances).
+void preference_measures(Row& m, const optimize::DesignResult& r) {
+  m.set("prefs_met", static_cast<long>(r.preferences.met));
+  m.set("prefs_total", static_cast<long>(r.preferences.total));
+  m.set("prefs_share", r.preferences.total > 0
+                           ? static_cast<double>(r.preferences.met) / r.preferences.total
+                           : 1.0);
+  m.set("worst_angle_deg", r.preferences.worst_angle * 180.0 / M_PI);
+  m.set("angle_over_20", r.preferences.worst_angle * 180.0 / M_PI > 20.0 ? 1L : 0L);
+}
+
+//! The planted witness under the design's objective and planner: its layout
+//! as it is (0 iterations), so its cost is the initial one. Nullopt when
+//! stopped.
+std::optional<optimize::DesignResult> witness_design(const geometry::Scene& witness,
+                                                     optimize::DesignOptions o,
+                                                     const std::atomic<bool>* stop) {
+  o.iterations = 0;
+  optimize::DesignResult wr = optimize::design(witness, o, stop);
+  if (stop && stop->load()) return std::nullopt;
+  return wr;
+}
+
+//! The search gap: the design's cost against the witness's, and what the
+//! witness itself achieves (it meets every preference by construction).
+void witness_measures(Row& m, const optimize::DesignResult& r, const optimize::DesignResult& wr) {
+  m.set("cost_witness", wr.initial.total());
+  m.set("witness_tours_found", wr.initial.tours_found);
+  m.set("cost_vs_witness", wr.initial.total() > 0 ? r.final.total() / wr.initial.total() : 0.0);
+  m.set("cost_le_witness", r.final.total() <= wr.initial.total() ? 1L : 0L);
+  m.set("witness_prefs_met", static_cast<long>(wr.preferences_initial.met));
+}
+
 RunOutput generalization_run(const RunSpec& spec, RunContext& context) {
   const auto [scene, witness] = zoo_room(spec, context);
   const std::string planner = param(spec, "planner");
@@ -89,12 +124,8 @@ RunOutput generalization_run(const RunSpec& spec, RunContext& context) {
   const optimize::DesignResult r = optimize::design(scene, o, context.stop);
   RunOutput out = design_output(r);
   if (out.stopped) return out;
-  // The witness under the same objective and planner: its layout as is
-  // (0 iterations), so its cost is the initial one.
-  optimize::DesignOptions w = o;
-  w.iterations = 0;
-  const optimize::DesignResult wr = optimize::design(witness, w, context.stop);
-  if (context.stop && context.stop->load()) {
+  const std::optional<optimize::DesignResult> wr = witness_design(witness, o, context.stop);
+  if (!wr) {
     out.stopped = true;
     return out;
   }
@@ -102,20 +133,8 @@ RunOutput generalization_run(const RunSpec& spec, RunContext& context) {
   m.set("objects", static_cast<long>(scene.objects.size()));
   m.set("area_m2", geometry::signed_area(scene.room.polygon));
   m.set("success", r.final.tours_found * 10 >= 9 * r.final.tours_total ? 1L : 0L);
-  m.set("cost_witness", wr.initial.total());
-  m.set("witness_tours_found", wr.initial.tours_found);
-  m.set("cost_vs_witness", wr.initial.total() > 0 ? r.final.total() / wr.initial.total() : 0.0);
-  m.set("cost_le_witness", r.final.total() <= wr.initial.total() ? 1L : 0L);
-  // The preferences half (optimize/preferences.h, default tolerances): the
-  // design's and the witness's, which meets them all by construction.
-  m.set("prefs_met", static_cast<long>(r.preferences.met));
-  m.set("prefs_total", static_cast<long>(r.preferences.total));
-  m.set("prefs_share", r.preferences.total > 0
-                           ? static_cast<double>(r.preferences.met) / r.preferences.total
-                           : 1.0);
-  m.set("worst_angle_deg", r.preferences.worst_angle * 180.0 / M_PI);
-  m.set("angle_over_20", r.preferences.worst_angle * 180.0 / M_PI > 20.0 ? 1L : 0L);
-  m.set("witness_prefs_met", static_cast<long>(wr.preferences_initial.met));
+  witness_measures(m, r, *wr);
+  preference_measures(m, r);
   return out;
 }
 
@@ -219,28 +238,18 @@ RunOutput tradeoff_run(const RunSpec& spec, RunContext& context) {
   RunOutput out = design_output(r);
   if (out.stopped) return out;
   Row& m = out.measures;
-  m.set("prefs_met", static_cast<long>(r.preferences.met));
-  m.set("prefs_total", static_cast<long>(r.preferences.total));
-  m.set("prefs_share", r.preferences.total > 0
-                           ? static_cast<double>(r.preferences.met) / r.preferences.total
-                           : 1.0);
-  m.set("worst_angle_deg", r.preferences.worst_angle * 180.0 / M_PI);
+  preference_measures(m, r);
   m.set("cost_path", r.final.path());
   m.set("cost_interior", r.final.interior());
   if (zoo) {
     // The search gap: the planted witness under the same weights and planner.
     apply_weighting(weighting, witness);
-    optimize::DesignOptions w = o;
-    w.iterations = 0;
-    const optimize::DesignResult wr = optimize::design(witness, w, context.stop);
-    if (context.stop && context.stop->load()) {
+    const std::optional<optimize::DesignResult> wr = witness_design(witness, o, context.stop);
+    if (!wr) {
       out.stopped = true;
       return out;
     }
-    m.set("cost_witness", wr.initial.total());
-    m.set("witness_tours_found", wr.initial.tours_found);
-    m.set("cost_vs_witness", wr.initial.total() > 0 ? r.final.total() / wr.initial.total() : 0.0);
-    m.set("cost_le_witness", r.final.total() <= wr.initial.total() ? 1L : 0L);
+    witness_measures(m, r, *wr);
   }
   return out;
 }

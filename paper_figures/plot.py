@@ -312,10 +312,7 @@ def fig_generalization(root, figs):
     runs = read_csv(os.path.join(root, "generalization", "runs.csv"))
     if not runs:
         return []
-    buckets = []
-    for r in runs:
-        if r["bucket"] not in buckets:
-            buckets.append(r["bucket"])
+    buckets = distinct(runs, "bucket")
     has_prefs = "prefs_share" in runs[0]
     fig, axes = plt.subplots(1, 3 if has_prefs else 2, figsize=(13 if has_prefs else 9, 3.6))
     ax1, ax2 = axes[0], axes[-1]
@@ -360,17 +357,21 @@ def fig_generalization(root, figs):
     return save(fig, figs, "generalization")
 
 
+def distinct(rows, key):
+    """The values of `key` in `rows`, in order of first appearance."""
+    seen = []
+    for r in rows:
+        if r[key] not in seen:
+            seen.append(r[key])
+    return seen
+
+
 def fig_tradeoff(root, figs):
     """Preferences met and tours found per room under each weighting."""
     runs = read_csv(os.path.join(root, "tradeoff", "runs.csv"))
     if not runs:
         return []
-    labels, weightings = [], []
-    for r in runs:
-        if r["label"] not in labels:
-            labels.append(r["label"])
-        if r["weighting"] not in weightings:
-            weightings.append(r["weighting"])
+    labels, weightings = distinct(runs, "label"), distinct(runs, "weighting")
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 3.8))
     xs = list(range(len(weightings)))
     for label in labels:
@@ -404,12 +405,7 @@ def tradeoff_section(root):
     if not runs:
         return []
     commits = sorted({r.get("commit", "?") for r in runs})
-    labels, weightings = [], []
-    for r in runs:
-        if r["label"] not in labels:
-            labels.append(r["label"])
-        if r["weighting"] not in weightings:
-            weightings.append(r["weighting"])
+    labels, weightings = distinct(runs, "label"), distinct(runs, "weighting")
     lines = [
         "",
         "## Beyond the paper: preferences against tours (the trade-off study)",
@@ -449,10 +445,7 @@ def zoo_section(root):
     if not runs or "prefs_share" not in runs[0]:
         return []
     commits = sorted({r.get("commit", "?") for r in runs})
-    buckets = []
-    for r in runs:
-        if r["bucket"] not in buckets:
-            buckets.append(r["bucket"])
+    buckets = distinct(runs, "bucket")
     lines = [
         "",
         "## Beyond the paper: rooms nobody tuned for (the room zoo)",
