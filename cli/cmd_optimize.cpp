@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <functional>
 #include <iostream>
 #include <iterator>
@@ -26,6 +27,7 @@
 #include "access/accessibility.h"
 #include "api/design_request.h"
 #include "api/operations.h"
+#include "api/progress.h"
 #include "cli/args.h"
 #include "cli/commands.h"
 #include "geometry/error.h"
@@ -136,31 +138,16 @@ constexpr const char* kDesignUsageTail =
     "Before the first iteration (enumerating sequences, generating goal poses) it stops\n"
     "at once and writes nothing.\n";
 
-std::string format_eta(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
-  return buf;
-}
-
-//! A progress bar with the best cost and ETA on stderr (terminal only).
+//! The design's progress (api::ProgressBar) with the best cost so far.
 std::function<void(const optimize::DesignStep&)> progress_bar(bool tty, long iterations,
                                                               const std::string& prefix) {
   if (!tty) return {};
-  const auto t0 = std::chrono::steady_clock::now();
-  return [=](const optimize::DesignStep& step) {
-    const int done = step.anneal.iteration + 1;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double eta = done > 0 ? elapsed / done * (iterations - done) : 0.0;
-    constexpr int kWidth = 30;
-    const int filled = iterations > 0 ? static_cast<int>(kWidth * done / iterations) : kWidth;
-    std::string bar(filled, '#');
-    bar.resize(kWidth, '.');
-    char line[200];
-    std::snprintf(line, sizeof line, "\r%s[%s] %d/%ld  best %.3f  ETA %s ", prefix.c_str(),
-                  bar.c_str(), done, iterations, step.anneal.best_cost, format_eta(eta).c_str());
-    std::cerr << line << std::flush;
+  const auto bar = std::make_shared<api::ProgressBar>(
+      true, prefix.empty() ? std::string("design") : prefix.substr(0, prefix.size() - 1), iterations);
+  return [bar](const optimize::DesignStep& step) {
+    char best[64];
+    std::snprintf(best, sizeof best, "best %.3f", step.anneal.best_cost);
+    bar->show(step.anneal.iteration + 1, best);
   };
 }
 

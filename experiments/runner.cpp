@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "experiments/runner.h"
 
+#include "api/progress.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -217,13 +219,6 @@ fs::path table_file(const fs::path& study_dir, const std::string& key, const std
   return study_dir / "runs" / (key + "." + table + ".csv");
 }
 
-std::string format_clock(double seconds) {
-  const long s = static_cast<long>(seconds + 0.5);
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
-  return buf;
-}
-
 //! Stores one finished run: its extra tables first, the run row last, so the
 //! row's presence means the run is complete.
 void store_run(const fs::path& study_dir, const RunSpec& spec, const Row& identity,
@@ -255,37 +250,6 @@ void store_run(const fs::path& study_dir, const RunSpec& spec, const Row& identi
 }  // namespace
 
 namespace {
-
-//! A progress bar with elapsed time and ETA on stderr (a terminal only).
-class ProgressBar {
- public:
-  ProgressBar(bool on, std::string name, int total)
-      : on_(on), name_(std::move(name)), total_(total), t0_(std::chrono::steady_clock::now()) {}
-  void show(int finished, const std::string& last) const {
-    if (!on_) return;
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
-    const double eta = finished > 0 ? elapsed / finished * (total_ - finished) : 0.0;
-    constexpr int kWidth = 30;
-    const int filled = total_ > 0 ? kWidth * finished / total_ : kWidth;
-    std::string bar(filled, '#');
-    bar.resize(kWidth, '.');
-    char line[256];
-    std::snprintf(line, sizeof line, "\r\033[K%s [%s] %d/%d  %s  ETA %s  %s", name_.c_str(),
-                  bar.c_str(), finished, total_, format_clock(elapsed).c_str(),
-                  finished > 0 ? format_clock(eta).c_str() : "?", last.c_str());
-    std::cerr << line << std::flush;
-  }
-  void clear() const {
-    if (on_) std::cerr << "\r\033[K" << std::flush;
-  }
-
- private:
-  bool on_;
-  std::string name_;
-  int total_;
-  std::chrono::steady_clock::time_point t0_;
-};
 
 //! Creates the study's directories and fails now, not after hours of work,
 //! when they are not writable.
@@ -370,7 +334,7 @@ class RunQueue {
  public:
   RunQueue(const Study& study, const StudyConfig& config, const fs::path& study_dir,
            const RunnerOptions& options, const std::vector<Pending>& todo, Recordings& recordings,
-           const ProgressBar& progress, RunnerReport& report)
+           const api::ProgressBar& progress, RunnerReport& report)
       : study_(study),
         config_(config),
         study_dir_(study_dir),
@@ -424,7 +388,7 @@ class RunQueue {
   const RunnerOptions& options_;
   const std::vector<Pending>& todo_;
   Recordings& recordings_;
-  const ProgressBar& progress_;
+  const api::ProgressBar& progress_;
   RunnerReport& report_;
   std::atomic<std::size_t> next_{0};
   std::mutex report_mutex_;  //!< guards report_ and progress_
@@ -455,7 +419,7 @@ RunnerReport run_study(const Study& study, const StudyConfig& config,
   prepare_study_dir(study_dir);
 
   Recordings recordings(config.out / "recordings");
-  const ProgressBar progress(options.progress, study.name, static_cast<int>(todo.size()));
+  const api::ProgressBar progress(options.progress, study.name, static_cast<long>(todo.size()));
   progress.show(0, "");
   RunQueue queue(study, config, study_dir, options, todo, recordings, progress, report);
   const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
