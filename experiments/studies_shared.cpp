@@ -6,12 +6,17 @@
 #include "experiments/studies_shared.h"
 
 #include <cctype>
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <string>
+#include <string_view>
 
 #include "api/reuse_list.h"
 #include "experiments/runner.h"
 #include "geometry/error.h"
 #include "optimize/design_io.h"
+#include "optimize/planner_config.h"
 #include "planning/reuse.h"
 
 namespace hrs::experiments::shared {
@@ -20,26 +25,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
-//! The planners the studies compare: a name in run keys and tables, and the
-//! planner text (api::parse_planner) it stands for.
-struct PlannerSpec {
-  const char* name;
-  const char* config;
-};
+//! The default preset with every §V technique off but those in `keep`,
+//! derived from the one technique list (planning::ReuseOptions::techniques()).
+optimize::PlannerConfig default_with_only(std::initializer_list<std::string_view> keep) {
+  optimize::PlannerConfig c = optimize::PlannerConfig::from_preset("default");
+  for (const auto& t : planning::ReuseOptions::techniques())
+    if (std::find(keep.begin(), keep.end(), std::string_view(t.name)) == keep.end())
+      c.reuse.*(t.on) = false;
+  return c;
+}
 
-constexpr PlannerSpec kPlanners[] = {
-    {"literal", "literal"},
-    {"baseline", "baseline"},
-    {"paper", "paper"},
-    {"all", "default"},
-    {"default", "default"},
-    {"samples_steering", "default,-paths,-trees,-failures,-shortcuts,-metrics,-speculate"},
-    {"none", "default,-samples,-steering,-paths,-trees,-failures,-shortcuts,-metrics,-speculate"},
-};
-
-const PlannerSpec& planner_spec(const std::string& name) {
-  for (const auto& p : kPlanners)
-    if (name == p.name) return p;
+//! The planners the studies compare, by the name in run keys and tables: the
+//! four presets, "all" (the default preset under its older study name), and
+//! two ablations of the proposed planner: only the RS-decomposition's samples
+//! and steering, and no technique at all.
+optimize::PlannerConfig study_planner(const std::string& name) {
+  if (name == "all") return optimize::PlannerConfig::from_preset("default");
+  if (name == "samples_steering") return default_with_only({"samples", "steering"});
+  if (name == "none") return default_with_only({});
+  for (const auto& p : optimize::PlannerConfig::presets())
+    if (name == p.name) return optimize::PlannerConfig::from_preset(name);
   throw InputError("unknown planner '" + name + "'");
 }
 
@@ -159,7 +164,7 @@ optimize::DesignOptions design_options(const StudyConfig& config, const std::str
   o.seed = seed;
   o.iterations = config.iterations;
   o.threads = config.threads;
-  o.planner = api::parse_planner(planner_spec(planner).config);
+  o.planner = study_planner(planner);
   return o;
 }
 
