@@ -212,6 +212,10 @@ namespace {
 //!   predicates certify is kept. A T whose slack is below kFineStep in some
 //!   direction may be missed: the search errs towards "does not fit".
 constexpr double kFineStep = 0.0025;  //!< m
+constexpr std::size_t kTurns = 4;      //!< wall directions tried (each with its quarter turns)
+//! Polygon edges the T search may visit (about a second): a room too large
+//! or too cluttered for it gets "not found, search incomplete".
+constexpr long long kTWork = 400'000'000;
 
 void find_t_shape(const geometry::Scene& layout, const std::vector<Polygon>& polys,
                   const std::vector<Polygon>& footprints, const geometry::ReachableSet& reach,
@@ -225,15 +229,29 @@ void find_t_shape(const geometry::Scene& layout, const std::vector<Polygon>& pol
   const double es = side - 2 * delta, ea = arm - 2 * delta;
   double inner = 0.0;
   if (ea >= es / 2) inner = std::min(es / 2, std::hypot(ea / 2, es / 2 - ea));
-  std::vector<double> turns;
+  // Directions (mod 90°) of the room's walls, longest total wall first; at
+  // most kTurns of them, so a room with many wall directions stays bounded.
+  std::vector<std::pair<double, double>> walls;  // (direction, total length)
   const Polygon& room = layout.room.polygon;
   for (std::size_t i = 0; i < room.size(); ++i) {
     const Vec2 a = room[i], b = room[(i + 1) % room.size()];
     double t = std::fmod(std::atan2(b.y - a.y, b.x - a.x), M_PI / 2);
     if (t < 0) t += M_PI / 2;
-    if (std::none_of(turns.begin(), turns.end(), [&](double u) { return std::abs(u - t) < 1e-9; }))
-      turns.push_back(t);
+    const double len = std::hypot(b.x - a.x, b.y - a.y);
+    auto it = std::find_if(walls.begin(), walls.end(),
+                           [&](const auto& w) { return std::abs(w.first - t) < 1e-9; });
+    if (it == walls.end())
+      walls.emplace_back(t, len);
+    else
+      it->second += len;
   }
+  std::stable_sort(walls.begin(), walls.end(),
+                   [](const auto& a, const auto& b) { return a.second > b.second; });
+  std::vector<double> turns;
+  for (std::size_t i = 0; i < walls.size() && i < kTurns; ++i) turns.push_back(walls[i].first);
+  std::size_t edges = 0;
+  for (const Polygon& poly : polys) edges += poly.size();
+  long long work = 0;  // polygon edges visited by the coarse and fine tests
   const auto free_t = [&](const Pose2& pose, double sd, double ar) {
     for (const Polygon& part : t_shape(pose, sd, ar))
       if (!rect_free(part, room, footprints)) return false;
@@ -264,10 +282,18 @@ void find_t_shape(const geometry::Scene& layout, const std::vector<Polygon>& pol
       for (const double t0 : turns)
         for (int q = 0; q < 4; ++q) {
           const double theta = t0 + q * M_PI / 2;
+          if ((work += static_cast<long long>(edges)) > kTWork) {
+            out.t_complete = false;
+            return;
+          }
           if (!free_t({x, y, theta}, es, ea)) continue;
           for (int i = 0; i <= fine; ++i)
             for (int j = 0; j <= fine; ++j) {
               const Pose2 pose{x - step / 2 + i * step / fine, y - step / 2 + j * step / fine, theta};
+              if ((work += static_cast<long long>(edges)) > kTWork) {
+                out.t_complete = false;
+                return;
+              }
               if (!free_t(pose, side, arm) || !certified(pose)) continue;
               out.t_fits = true;
               out.t_pose = pose;
@@ -416,6 +442,7 @@ std::string report_json(const Report& r) {
         {"t_shape",
          {{"evaluated", r.turning.t_evaluated},
           {"pass", r.turning.t_fits},
+          {"complete", r.turning.t_complete},
           {"pose", r.turning.t_fits ? pose_json(r.turning.t_pose) : json(nullptr)}}},
         {"pass", r.turning.fits},
         {"grid_m", r.turning.grid_m},

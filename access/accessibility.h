@@ -29,7 +29,8 @@
 //   is within a grid diagonal (7 cm at 5 cm spacing) of the largest that fits
 //   anywhere on that set (rooms with many edges get a coarser grid, reported);
 //   when no circle fits, the T-shaped space is tried at the same centres,
-//   turned to each wall's direction and by quarter turns; the first free one
+//   turned to the four longest walls' directions and by quarter turns (with
+//   a work bound, reported when reached); the first free one
 //   found in double precision is certified with the exact predicates
 //   (geometry/polygon_ops.h) before it counts;
 // - door: the scene's door width.
@@ -92,6 +93,9 @@ struct Turning {
   //! The T-shaped space: tried when no circle fits and the rules allow it.
   bool t_evaluated = false;
   bool t_fits = false;
+  //! False when the T search stopped at its work bound before trying every
+  //! candidate (a room too large or too cluttered); t_fits is then false.
+  bool t_complete = true;
   geometry::Pose2 t_pose;  //!< centre of its square; the bar lies along +y of this frame
   //! From the circle's centre, or from the T's when only the T fits.
   std::vector<std::pair<std::string, double>> distance_to_stops;  //!< object, m

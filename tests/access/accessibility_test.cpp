@@ -223,6 +223,7 @@ TEST(Accessibility, TShapedSpaceJustAboveAndBelowTheRule) {
     EXPECT_LT(a.turning.largest_diameter, 1.525) << rot;
     EXPECT_TRUE(a.turning.t_evaluated) << rot;
     EXPECT_TRUE(a.turning.t_fits) << rot;
+    EXPECT_TRUE(a.turning.t_complete) << rot;
     EXPECT_TRUE(a.turning.fits) << rot;
     if (a.turning.t_fits) EXPECT_EQ(expect_t_free(fit, a, rng), 3000);
     const json doc = json::parse(hrs::access::report_json(a));
@@ -234,6 +235,7 @@ TEST(Accessibility, TShapedSpaceJustAboveAndBelowTheRule) {
       const auto b = hrs::access::evaluate(tight, {}, Rules{});
       EXPECT_TRUE(b.turning.t_evaluated) << rot;
       EXPECT_FALSE(b.turning.t_fits) << rot;
+      EXPECT_TRUE(b.turning.t_complete) << rot;  // a real "no", not a search cut short
       EXPECT_FALSE(b.turning.fits) << rot;
     }
     // ISO 21542 has the circle only.
