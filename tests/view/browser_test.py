@@ -9,7 +9,8 @@ wrote from file:// and checks that
   - the animation advances: the chair's transform changes over time;
   - choosing another tour redraws the selected path and its cusps;
   - the accessibility overlay toggles off and on;
-  - every overlay toggle and the scrubber act on the page.
+  - every overlay toggle and the scrubber act on the page;
+  - a design with no tour found and no iteration loads without errors.
 
 usage: browser_test.py HRSPACE SCENE [--iterations N] [--screenshot PNG]
 With --screenshot the page, tour 2 selected and the route-width overlay on,
@@ -166,6 +167,33 @@ def main():
             check(url in urls, "the page's own load was not seen in the network log: %s" % urls)
             others = [u for u in urls if u != url]
             check(not others, "the page requested %s" % others)
+
+            # A design with no tour found and no iteration (a box behind a
+            # wall-to-wall partition): the page still loads cleanly.
+            walled = pathlib.Path(tmp) / "walled.json"
+            walled.write_text(json.dumps({
+                "format": "hrspace-scene/1", "name": "walled",
+                "room": {"polygon": [[0, 0], [4, 0], [4, 3], [0, 3]]},
+                "door": {"center": [0, 1.5], "width": 0.9},
+                "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+                "objects": [
+                    {"id": "partition", "size": [0.1, 3.0], "pose": [2.5, 1.5, 0], "fixed": True},
+                    {"id": "box", "size": [0.4, 0.4], "pose": [3.5, 1.5, 0], "fixed": True}],
+                "activity": {"transitions": {"door": {"box": 1.0}}, "visits": 1}}))
+            empty = pathlib.Path(tmp) / "empty"
+            subprocess.run([args.hrspace, "design", str(walled), "--out", str(empty),
+                            "--iterations", "0"], check=True, stdout=subprocess.DEVNULL)
+            check(not any(t["found"] for t in json.loads((empty / "tours.json").read_text())["tours"]),
+                  "a tour was found behind the partition")
+            driver.get((empty / "design.html").resolve().as_uri())
+            time.sleep(0.3)
+            check(attr(driver, "chair", "display") == "none", "the chair is drawn on an unfound tour")
+            check("not found" in driver.find_element("id", "tour-info").text,
+                  "the tour line does not say 'not found'")
+            check(driver.find_element("id", "summary").text.startswith("tours found"),
+                  "no summary on the empty design")
+            bad = [e for e in driver.get_log("browser") if e.get("level") in ("WARNING", "SEVERE")]
+            check(not bad, "console messages on the empty design: %s" % bad)
         finally:
             driver.quit()
     print("browser_test: design.html loads, animates, switches tours and toggles overlays")
