@@ -303,7 +303,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
   api::write_design_files(result, info, extras, dir);
   svgs.push_back(
-      optimize::design_svg(result, scene.name + " — seed " + std::to_string(options.seed)));
+      optimize::design_svg(result, api::design_title(result, options.seed)));
   print_summary(dir, result);
   std::printf("%s: %s\n", dir.string().c_str(), access_line.c_str());
   return result.stopped || g_interrupted.load();
