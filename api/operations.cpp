@@ -261,11 +261,17 @@ DesignExtras attach_extras(const optimize::DesignResult& result, const std::stri
   return extras;
 }
 
+const std::vector<std::string>& extra_file_names() {
+  static const std::vector<std::string> names = {"accessibility.json", "design.html"};
+  return names;
+}
+
 void write_design_files(const optimize::DesignResult& result, const optimize::RunInfo& info,
                         const DesignExtras& extras, const std::filesystem::path& dir) {
   optimize::require_writable_directory(dir);
-  optimize::write_files_atomic({{dir / "accessibility.json", extras.accessibility},
-                                {dir / "design.html", extras.viewer}});
+  const auto& names = extra_file_names();
+  optimize::write_files_atomic({{dir / names[0], extras.accessibility},
+                                {dir / names[1], extras.viewer}});
   optimize::write_design(result, info, dir);
 }
 

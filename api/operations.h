@@ -143,6 +143,8 @@ DesignExtras attach_extras(const optimize::DesignResult& result, const std::stri
 std::string design_title(const optimize::DesignResult& result, std::uint64_t seed);
 //! FNV-1a (64 bit) of `text` as 16 hex digits, as manifest.json uses.
 std::string fnv1a64_hex(const std::string& text);
+//! The names write_design_files writes beside optimize::design_file_names().
+const std::vector<std::string>& extra_file_names();
 //! accessibility.json and design.html (atomically), then the design's own
 //! files and manifest (optimize::write_design); report.json pins the two by
 //! their digests.

@@ -66,7 +66,9 @@ extern "C" void on_design_stop_signal(int sig) {
 //! (InputError). `dry_run` only checks. Returns the number of stale outputs.
 int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep, bool dry_run) {
   namespace fs = std::filesystem;
-  const auto& names = optimize::design_file_names();
+  // The design's own files and the front end's (accessibility.json, design.html).
+  std::vector<std::string> names = optimize::design_file_names();
+  for (const std::string& n : api::extra_file_names()) names.push_back(n);
   std::vector<fs::path> stale;
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(out, ec)) {
@@ -78,8 +80,7 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
     if (multi && k >= 1 && k <= keep && name == std::to_string(k)) continue;
     for (const auto& inner : fs::directory_iterator(entry.path(), ec)) {
       const std::string f = inner.path().filename().string();
-      if (std::find(names.begin(), names.end(), f) == names.end() && f != "accessibility.json" &&
-          f.rfind(".", 0) != 0) {
+      if (std::find(names.begin(), names.end(), f) == names.end() && f.rfind(".", 0) != 0) {
         throw InputError(entry.path().string() + ": holds " + f +
                          ", not an output of hrspace design; remove it or choose another --out");
       }
@@ -89,7 +90,6 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
   if (multi) {
     for (const auto& n : names)
       if (fs::exists(out / n, ec)) stale.push_back(out / n);
-    if (fs::exists(out / "accessibility.json", ec)) stale.push_back(out / "accessibility.json");
   } else if (fs::exists(out / "contact_sheet.svg", ec)) {
     stale.push_back(out / "contact_sheet.svg");
   }
