@@ -202,7 +202,8 @@ namespace {
 
 //! The T-shaped space (ADA §304.3.2), turned to the direction of each room
 //! edge and by quarter turns of it, in two passes:
-//! - coarse: at the turning circle's candidate centres (spacing `step`),
+//! - coarse: at the turning circle's candidate centres (`centres`, spacing
+//!   `step`, with their clearance),
 //!   the T eroded by half a cell diagonal δ (side and arm 2δ smaller, same
 //!   centre). A T that fits at some centre c contains, for the grid centre g
 //!   nearest c (|g − c| ≤ δ), the eroded T at g; so every fitting T leaves an
@@ -218,8 +219,9 @@ constexpr std::size_t kTurns = 4;      //!< wall directions tried (each with its
 constexpr long long kTWork = 400'000'000;
 
 void find_t_shape(const geometry::Scene& layout, const std::vector<Polygon>& polys,
-                  const std::vector<Polygon>& footprints, const geometry::ReachableSet& reach,
-                  const Rules& rules, double step, Turning& out) {
+                  const std::vector<Polygon>& footprints,
+                  const std::vector<std::pair<Vec2, double>>& centres, const Rules& rules,
+                  double step, Turning& out) {
   out.t_evaluated = true;
   const double side = rules.turning_diameter, arm = rules.t_arm_width;
   const double delta = step * std::sqrt(0.5);
@@ -266,41 +268,31 @@ void find_t_shape(const geometry::Scene& layout, const std::vector<Polygon>& pol
     return true;
   };
   const int fine = static_cast<int>(std::ceil(step / kFineStep));
-  const auto [x0, y0, x1, y1] = geometry::bounding_box(room);
-  for (double y = y0 + step / 2; y < y1; y += step)
-    for (double x = x0 + step / 2; x < x1; x += step) {
-      const Vec2 c{x, y};
-      if (!inside(room, c) || !reach.column_reached({x, y, 0.0})) continue;
-      double r = kInf;
-      for (const Polygon& poly : polys)
-        for (std::size_t i = 0; i < poly.size(); ++i)
-          r = std::min(r, geometry::point_segment_distance(c, poly[i], poly[(i + 1) % poly.size()]));
-      if (r + 1e-9 < inner) continue;
-      bool in_object = false;
-      for (const Polygon& f : footprints) in_object = in_object || inside(f, c);
-      if (in_object) continue;
-      for (const double t0 : turns)
-        for (int q = 0; q < 4; ++q) {
-          const double theta = t0 + q * M_PI / 2;
-          if ((work += static_cast<long long>(edges)) > kTWork) {
-            out.t_complete = false;
-            return;
-          }
-          if (!free_t({x, y, theta}, es, ea)) continue;
-          for (int i = 0; i <= fine; ++i)
-            for (int j = 0; j <= fine; ++j) {
-              const Pose2 pose{x - step / 2 + i * step / fine, y - step / 2 + j * step / fine, theta};
-              if ((work += static_cast<long long>(edges)) > kTWork) {
-                out.t_complete = false;
-                return;
-              }
-              if (!free_t(pose, side, arm) || !certified(pose)) continue;
-              out.t_fits = true;
-              out.t_pose = pose;
+  for (const auto& [c, r] : centres) {
+    if (r + 1e-9 < inner) continue;
+    const double x = c.x, y = c.y;
+    for (const double t0 : turns)
+      for (int q = 0; q < 4; ++q) {
+        const double theta = t0 + q * M_PI / 2;
+        if ((work += static_cast<long long>(edges)) > kTWork) {
+          out.t_complete = false;
+          return;
+        }
+        if (!free_t({x, y, theta}, es, ea)) continue;
+        for (int i = 0; i <= fine; ++i)
+          for (int j = 0; j <= fine; ++j) {
+            const Pose2 pose{x - step / 2 + i * step / fine, y - step / 2 + j * step / fine, theta};
+            if ((work += static_cast<long long>(edges)) > kTWork) {
+              out.t_complete = false;
               return;
             }
-        }
-    }
+            if (!free_t(pose, side, arm) || !certified(pose)) continue;
+            out.t_fits = true;
+            out.t_pose = pose;
+            return;
+          }
+      }
+  }
 }
 
 }  // namespace
@@ -371,6 +363,9 @@ Report evaluate(const geometry::Scene& layout, const std::vector<planning::Tour>
   const double step = std::max(kTurningGrid, std::sqrt((x1 - x0) * (y1 - y0) *
                                                        static_cast<double>(edges) / 2e7));
   rep.turning.grid_m = step;
+  // The candidate centres (in the room, reached from the door, outside every
+  // footprint) with their clearance: the circle's, then the T's candidates.
+  std::vector<std::pair<Vec2, double>> centres;
   for (double y = y0 + step / 2; grid && y < y1; y += step)
     for (double x = x0 + step / 2; x < x1; x += step) {
       const Vec2 c{x, y};
@@ -382,10 +377,12 @@ Report evaluate(const geometry::Scene& layout, const std::vector<planning::Tour>
       for (const Polygon& poly : polys)
         for (std::size_t i = 0; i < poly.size(); ++i)
           r = std::min(r, geometry::point_segment_distance(c, poly[i], poly[(i + 1) % poly.size()]));
+      centres.emplace_back(c, r);
       if (2 * r > rep.turning.largest_diameter) rep.turning.largest_diameter = 2 * r, rep.turning.centre = c;
     }
   rep.turning.circle_fits = rep.turning.largest_diameter >= rules.turning_diameter;
-  if (grid && !rep.turning.circle_fits && rules.t_shape) find_t_shape(layout, polys, footprints, reach, rules, step, rep.turning);
+  if (grid && !rep.turning.circle_fits && rules.t_shape)
+    find_t_shape(layout, polys, footprints, centres, rules, step, rep.turning);
   rep.turning.fits = rep.turning.circle_fits || rep.turning.t_fits;
   const Vec2 from = rep.turning.t_fits ? Vec2{rep.turning.t_pose.x, rep.turning.t_pose.y}
                                         : rep.turning.centre;

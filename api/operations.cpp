@@ -186,8 +186,14 @@ AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::Desig
   const access::Rules rule_set = access::Rules::named(rules);
   const std::uint64_t first = options.seed;
   AccessGoalResult best;
+  if (tries <= 1) {  // one plain design: nothing to choose, so no report here
+    if (on_try) on_try(0);
+    best.result = optimize::design(scene, options, stop, progress);
+    best.seed = first;
+    return best;
+  }
   AccessTry kept;
-  for (int k = 0; k < std::max(1, tries); ++k) {
+  for (int k = 0; k < tries; ++k) {
     if (k > 0 && stop && stop->load()) break;
     if (on_try) on_try(k);
     options.seed = first + static_cast<std::uint64_t>(k) * stride;

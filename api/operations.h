@@ -105,8 +105,8 @@ struct AccessTry {
 //! stride, … (at most `tries`, each a whole design of options.iterations)
 //! and keeps the first whose layout passes `rules`; when none passes, the
 //! one with the fewest failed checks, then the lower cost. With tries = 1 it
-//! is one plain design. A stop (through `stop`) ends the tries: the best so
-//! far is kept. `on_try(k)` (may be empty) is called before try k (from 0).
+//! is one plain design (`tries` stays empty). A stop (through `stop`) ends
+//! the tries: the best so far is kept. `on_try(k)` (may be empty) is called before try k (from 0).
 //! hrs::Interrupted escapes only when the first try stopped before its first
 //! iteration.
 struct AccessGoalResult {

@@ -166,14 +166,12 @@ void print_summary(const std::filesystem::path& dir, const optimize::DesignResul
 }
 
 //! What one `hrspace design` command asks for: the shared request
-//! (api/design_request.h) and where its scene and outputs are.
-struct DesignRequest {
+//! (api/design_request.h), where its scene and outputs are, and the planner
+//! it names.
+struct DesignRequest : api::DesignRequest {
   std::string scene_path;  //!< a scene file, or "-" for stdin
   std::string out;
-  api::DesignRequest request;
-  optimize::PlannerConfig planner;  //!< request.planner_config()
-  long seed = 1, iterations = 700, designs = 1, threads = 0, access_goal = 1;
-  std::string rules = "ada";
+  optimize::PlannerConfig planner_choice;  //!< planner_config(), computed once
 };
 
 //! The command's arguments translated into an api::DesignRequest, which
@@ -185,26 +183,19 @@ DesignRequest design_request(const Args& args) {
   if (!out) throw InputError("--out DIR is required (see --help)");
   DesignRequest r;
   r.out = *out;
-  api::DesignRequest& q = r.request;
-  q.planner = args.get_or("planner", "default");
-  q.reuse = args.get("reuse");
-  q.disable = args.get("disable");
-  q.weights = args.get("weights");
+  r.planner = args.get_or("planner", "default");
+  r.reuse = args.get("reuse");
+  r.disable = args.get("disable");
+  r.weights = args.get("weights");
   constexpr long kAny = std::numeric_limits<long>::max();
-  q.seed = args.integer("seed", 1, -kAny, kAny);
-  q.iterations = args.integer("iterations", 700, -kAny, kAny);
-  q.designs = args.integer("designs", 1, -kAny, kAny);
-  q.rules = args.get_or("rules", "ada");
-  q.access_goal = args.integer("access-goal", 1, -kAny, kAny);
-  q.threads = args.integer("threads", 0, -kAny, kAny);
-  q.validate();
-  r.planner = q.planner_config();
-  r.seed = q.seed;
-  r.iterations = q.iterations;
-  r.designs = q.designs;
-  r.threads = q.threads;
-  r.rules = q.rules;
-  r.access_goal = q.access_goal;
+  r.seed = args.integer("seed", 1, -kAny, kAny);
+  r.iterations = args.integer("iterations", 700, -kAny, kAny);
+  r.designs = args.integer("designs", 1, -kAny, kAny);
+  r.rules = args.get_or("rules", "ada");
+  r.access_goal = args.integer("access-goal", 1, -kAny, kAny);
+  r.threads = args.integer("threads", 0, -kAny, kAny);
+  r.validate();
+  r.planner_choice = r.planner_config();
   r.scene_path = args.positional()[0];
   return r;
 }
@@ -222,7 +213,7 @@ geometry::Scene prepare_design(const DesignRequest& r) {
   optimize::require_writable_directory(r.out);
   remove_stale_outputs(r.out, r.designs > 1, r.designs,
                        true);  // refuses foreign files now, not at the end
-  r.request.apply_weights(scene);
+  r.apply_weights(scene);
   return scene;
 }
 
@@ -265,7 +256,7 @@ std::filesystem::path design_dir(const DesignRequest& r, long d) {
 bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bool tty,
                 std::vector<std::string>& svgs) {
   // The same options as the Python module's design() (api/operations.h).
-  optimize::DesignOptions options = r.request.options(d);
+  optimize::DesignOptions options = r.options(d);
   const auto progress = progress_bar(
       tty, r.iterations, r.designs > 1 ? "design " + std::to_string(d + 1) + " " : std::string());
   api::AccessGoalResult goal;
@@ -278,7 +269,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
                                     if (k > 0)
                                       std::fprintf(stderr,
                                                    "hrspace design: accessibility goal: try %d "
-                                                   "of %ld (seed %llu)\n",
+                                                   "of %lld (seed %llu)\n",
                                                    k + 1, r.access_goal,
                                                    static_cast<unsigned long long>(
                                                        options.seed + k * r.designs));
@@ -297,7 +288,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   options.seed = goal.seed;
   if (tty) std::cerr << "\r\033[K" << std::flush;
   const std::filesystem::path dir = design_dir(r, d);
-  optimize::RunInfo info{options.seed, r.planner.name(), static_cast<int>(r.iterations)};
+  optimize::RunInfo info{options.seed, r.planner_choice.name(), static_cast<int>(r.iterations)};
   if (r.access_goal > 1) info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
   std::string access_line;
   const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
