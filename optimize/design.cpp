@@ -16,6 +16,7 @@
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
 #include "optimize/escape.h"
+#include "optimize/arrange.h"
 #include "optimize/polish.h"
 #include "optimize/tour_round.h"
 #include "planning/motion_validator.h"
@@ -36,32 +37,6 @@ std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
   std::uint64_t h = splitmix64(seed);
   h = splitmix64(h ^ static_cast<std::uint64_t>(iteration));
   return splitmix64(h ^ (static_cast<std::uint64_t>(tour) << 32));
-}
-
-std::string object_violation(const geometry::Scene& scene, int index) {
-  // Contact is allowed within geometry::kContactTolerance, as in the reader.
-  const auto& o = scene.objects[index];
-  const auto fp = geometry::world_footprint(o);
-  if (const auto out = geometry::protrusion(fp, scene.room.polygon))
-    return o.id + " " + geometry::sticks_out_text(*out, scene.room.polygon);
-  if (const auto depth = geometry::overlap_depth(fp, geometry::door_clear_zone(scene)))
-    return o.id + " enters the door's clear zone by " + geometry::metres_text(*depth) + " m";
-  for (std::size_t j = 0; j < scene.objects.size(); ++j) {
-    if (static_cast<int>(j) == index) continue;
-    if (const auto depth =
-            geometry::overlap_depth(fp, geometry::world_footprint(scene.objects[j])))
-      return o.id + " overlaps " + scene.objects[j].id + " by " + geometry::metres_text(*depth) +
-             " m";
-  }
-  return "";
-}
-
-std::string layout_violation(const geometry::Scene& scene) {
-  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-    auto v = object_violation(scene, static_cast<int>(i));
-    if (!v.empty()) return v;
-  }
-  return "";
 }
 
 namespace {
@@ -160,17 +135,24 @@ class DesignRun {
   //! Temperatures from the initial cost (docs/optimize.md), jumps inside
   //! the room's bounding box unless the options bound them.
   AnnealOptions make_schedule() {
-    AnnealOptions schedule = options_.anneal;
+    AnnealOptions schedule = moves();
     schedule.iterations = options_.iterations;
-    if (!schedule.bounds) {
-      const geometry::Box b = geometry::bounding_box(scene_.room.polygon);
-      schedule.bounds = std::array<double, 4>{b.xmin, b.ymin, b.xmax, b.ymax};
-    }
     schedule.t_start = std::max(1e-6, options_.t_start_fraction * current_terms_.total());
     schedule.t_end = schedule.t_start * options_.t_end_ratio;
     result_.t_start = schedule.t_start;
     result_.t_end = schedule.t_end;
     return schedule;
+  }
+
+  //! The annealer's moves, jumps inside the room's bounding box unless the
+  //! options bound them.
+  AnnealOptions moves() const {
+    AnnealOptions m = options_.anneal;
+    if (!m.bounds) {
+      const geometry::Box b = geometry::bounding_box(scene_.room.polygon);
+      m.bounds = std::array<double, 4>{b.xmin, b.ymin, b.xmax, b.ymax};
+    }
+    return m;
   }
 
   AnnealCallbacks callbacks() {
@@ -201,11 +183,17 @@ class DesignRun {
   }
 
   //! The exact checks of one moved object, before any planning.
+  //! Every object is taken at `p` (a pair move of the polish checks the
+  //! partner against the object's new pose).
   bool move_valid(const std::vector<Pose2>& p, int moved) {
-    const Pose2 old = work_.objects[moved].pose;
-    work_.objects[moved].pose = p[moved];
+    std::vector<std::pair<std::size_t, Pose2>> placed;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (work_.objects[i].pose != p[i]) {
+        placed.emplace_back(i, work_.objects[i].pose);
+        work_.objects[i].pose = p[i];
+      }
     const bool ok = object_violation(work_, moved).empty();
-    work_.objects[moved].pose = old;
+    for (const auto& [i, pose] : placed) work_.objects[i].pose = pose;
     return ok && !escape_.covers_a_stop(p[moved], moved);
   }
 
@@ -335,6 +323,27 @@ class DesignRun {
     if (progress_) progress_(step);
   }
 
+  //! The preference arrangement (optimize/arrange.h) of the best layout
+  //! `poses` (placed; toured: `terms` and tours_).
+  void arrange_best(std::vector<Pose2>& poses, CostTerms& terms) {
+    ArrangeHooks hooks;
+    hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
+    hooks.set = [this](int o, const Pose2& to) { work_.objects[o].pose = to; };
+    hooks.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+      return preferred_move(p, o, rng);
+    };
+    ToursHooks toured;
+    toured.place = [this](int o, const Pose2& to) { place(o, to); };
+    toured.plan = [this](const std::vector<Pose2>& p) {
+      ++iteration_;
+      plan_current();
+      return model_.evaluate(p, tours_, &round_.blockage());
+    };
+    result_.arrange = arrange_toured(scene_, model_, movable_, tours_, poses, terms, moves(), hooks,
+                                     toured, options_.seed, stop_);
+    if (result_.arrange.kept) result_.tours = tours_;
+  }
+
   //! The final polish (optimize/polish.h) of the best layout, written into
   //! result_.layout, result_.final and result_.tours.
   void polish_best(const AnnealResult& r) {
@@ -350,6 +359,7 @@ class DesignRun {
       result_.tours = tours_;
       result_.final = terms;
     }
+    arrange_best(poses, terms);
     result_.polish.tours_found_before = terms.tours_found;
     result_.polish.met_before = check_preferences(scene_, model_, poses).met;
     PolishHooks hooks;
@@ -366,7 +376,7 @@ class DesignRun {
     result_.polish.tried = pr.tried;
     result_.polish.kept = pr.kept;
     result_.polish.squared = pr.squared;
-    if (pr.kept == 0 && pr.squared == 0) return;
+    if (!result_.arrange.kept && pr.kept == 0 && pr.squared == 0) return;
     for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
     result_.final = terms;
     result_.valid = layout_violation(result_.layout).empty();

@@ -32,6 +32,7 @@
 #include "geometry/cspace.h"
 #include "geometry/scene.h"
 #include "optimize/annealer.h"
+#include "optimize/arrange.h"
 #include "optimize/costs.h"
 #include "optimize/planner_config.h"
 #include "optimize/preferences.h"
@@ -120,6 +121,10 @@ struct DesignResult {
   //! Moves refused because they would leave a stop without any free goal
   //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.
   int covering_moves = 0;
+  //! The preference arrangement of the annealer's best layout
+  //! (optimize/arrange.h): preferences met and tours found before and after,
+  //! and whether it was kept (at least the same tours, a lower total cost).
+  ArrangeReport arrange;
   //! The final polish (optimize/polish.h): poses planned and kept.
   struct Polish {
     int tried = 0, kept = 0, squared = 0;

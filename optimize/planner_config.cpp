@@ -95,7 +95,8 @@ const std::array<PlannerConfig::Switch, 5>& PlannerConfig::switches() {
       {"early", &PlannerConfig::early,
        "a proposal stops being planned once a lower bound of its cost is rejected"},
       {"prefer", &PlannerConfig::prefer,
-       "preference terms bounded and scaled to their tolerances, preference moves, and a "
+       "preference terms bounded and scaled to their tolerances, preference moves, an "
+       "arrangement clear of the found tours, and a "
        "final polish that keeps every found tour"},
   }};
   return list;

@@ -52,8 +52,10 @@ struct PlannerConfig {
   //! Ours: preferences as a designer reads them (optimize/preferences.h):
   //! each interior term is bounded and scaled to its tolerance, the annealer
   //! also proposes preference moves (against a wall, a wall slot, aligned
-  //! with a relation partner), and a final polish moves each object to a
-  //! pose that meets its preferences wherever every found tour stays found.
+  //! with a relation partner), an arrangement re-packs the best layout on
+  //! the interior cost clear of the found tours' corridor
+  //! (optimize/arrange.h), and a final polish moves each object to a pose
+  //! that meets its preferences wherever every found tour stays found.
   //! Off: the paper's squared interior terms and moves.
   bool prefer = true;
 

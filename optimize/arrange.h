@@ -1,0 +1,124 @@
+#pragma once
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The preference arrangement of a design (beyond the paper; docs/optimize.md
+// "Preferences"): after the tour annealing, a long and cheap annealing of
+// the interior cost alone — no tour is planned — rearranges the best layout
+// toward the scene's preferences (walls, relations) while every object stays
+// valid and clear of the corridor that the found tours drive through
+// (TourCorridor). The design loop then tours the arranged layout once and
+// keeps it when it finds at least the same tours at a lower total cost.
+//
+// Why: a preference layout is a packing problem (a bed, two wardrobes and a
+// sofa each want a wall slot of their own, the TV the spot across from the
+// sofa). The tour annealing has a few hundred proposals, each planned, and
+// finds such packings only in small rooms; the interior cost alone costs
+// microseconds, so thousands of proposals fit in a fraction of one tour
+// round. The corridor keeps the found paths collision-free (up to its
+// sampling, which the final tour round certifies), so the search does not
+// trade tours away. It uses the same annealer, moves and preference moves
+// (optimize/annealer.h), so it is seeded, deterministic and valid at every
+// step.
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "geometry/pose.h"
+#include "geometry/scene.h"
+#include "optimize/annealer.h"
+#include "optimize/costs.h"
+#include "planning/tour_types.h"
+
+namespace hrs::optimize {
+
+//! The chair's footprints at every waypoint of the found tours, bucketed on
+//! a uniform grid: clear() tells whether an object footprint keeps `margin`
+//! from all of them (separating axes on convex hulls; the margin covers the
+//! motion between waypoints, planning::kWaypointStep apart).
+class TourCorridor {
+ public:
+  TourCorridor(const geometry::Wheelchair& chair, const std::vector<planning::Tour>& tours,
+               double margin = 0.05, double cell = 0.25);
+  bool clear(const geometry::Polygon& footprint) const;
+  std::size_t footprints() const { return shapes_.size(); }
+
+ private:
+  std::vector<geometry::Polygon> shapes_;  //!< chair footprints (convex)
+  std::vector<geometry::Box> boxes_;
+  std::vector<std::vector<int>> cells_;    //!< shape indices per grid cell
+  double margin_, cell_;
+  double x0_ = 0.0, y0_ = 0.0;
+  int nx_ = 0, ny_ = 0;
+};
+
+struct ArrangeHooks {
+  //! Exact validity of `poses` after moving object `moved`, with the other
+  //! objects where the last set() put them. Required.
+  std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
+  //! Object `object` is now at `to` for valid()'s purposes (cheap: no C-space).
+  std::function<void(int object, const geometry::Pose2& to)> set;
+  //! A preference move (AnnealCallbacks::preferred); may be unset.
+  std::function<std::optional<geometry::Pose2>(const std::vector<geometry::Pose2>& poses,
+                                               int object, std::mt19937_64& rng)>
+      preferred;
+};
+
+struct ArrangeOptions {
+  //! Proposals per movable object (the cost is microseconds a proposal).
+  int iterations_per_object = 150;
+  //! t_start = this × the input's interior cost; cooling to t_start × t_end_ratio.
+  double t_start_fraction = 0.3;
+  double t_end_ratio = 1e-4;
+};
+
+struct ArrangeResult {
+  std::vector<geometry::Pose2> poses;  //!< the best valid layout seen (the input if none)
+  double interior_before = 0.0;        //!< interior cost (weighted) of the input
+  double interior_after = 0.0;         //!< of `poses`
+  int proposals = 0;
+  int accepted = 0;
+};
+
+//! Anneals the interior cost of `poses` (objects with movable[i] false stay);
+//! `moves` supplies the move kinds and the jump bounds (its temperatures and
+//! iterations are replaced). The hooks' set() state is back at `poses` on
+//! return. Deterministic in `seed`.
+ArrangeResult arrange(const CostModel& model, const std::vector<bool>& movable,
+                      const std::vector<geometry::Pose2>& poses, const AnnealOptions& moves,
+                      const ArrangeOptions& options, const ArrangeHooks& hooks,
+                      std::uint64_t seed, const std::atomic<bool>* stop = nullptr);
+
+//! What arrange_toured() needs beyond ArrangeHooks.
+struct ToursHooks {
+  //! Moves object `object` to `to` (C-space included).
+  std::function<void(int object, const geometry::Pose2& to)> place;
+  //! Tours the placed layout `poses` and returns its terms.
+  std::function<CostTerms(const std::vector<geometry::Pose2>& poses)> plan;
+};
+
+//! What arrange_toured() did (report.json `arrange`).
+struct ArrangeReport {
+  bool kept = false;
+  int proposals = 0;
+  int met_before = 0, met_after = 0;
+  int tours_found_before = 0, tours_found_after = 0;
+};
+
+//! The arrangement of a toured layout `poses` (placed; its terms `terms`,
+//! its tours `tours`): the stops of the found tours stay (their goal poses
+//! move with them, and the path to them would be lost), every move keeps
+//! clear of the found tours' corridor, and the arranged layout is toured
+//! once and kept (`poses`, `terms` updated; else placed back) when it finds
+//! at least as many tours at a lower total cost.
+ArrangeReport arrange_toured(const geometry::Scene& scene, const CostModel& model,
+                             const std::vector<bool>& movable,
+                             const std::vector<planning::Tour>& tours,
+                             std::vector<geometry::Pose2>& poses, CostTerms& terms,
+                             const AnnealOptions& moves, const ArrangeHooks& hooks,
+                             const ToursHooks& toured, std::uint64_t seed,
+                             const std::atomic<bool>* stop = nullptr);
+
+}  // namespace hrs::optimize
