@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <chrono>
 #include <cmath>
 
 #include "optimize/preferences.h"
@@ -176,6 +177,9 @@ ArrangeReport arrange_toured(const geometry::Scene& scene, const CostModel& mode
                              const ToursHooks& toured, std::uint64_t seed,
                              const std::atomic<bool>* stop) {
   ArrangeReport report;
+  report.rounds = 1;
+  report.met_before = report.met_after = check_preferences(scene, model, poses).met;
+  report.tours_found_before = report.tours_found_after = terms.tours_found;
   std::vector<bool> free = movable;
   for (const planning::Tour& t : tours)
     if (t.found)
@@ -184,12 +188,13 @@ ArrangeReport arrange_toured(const geometry::Scene& scene, const CostModel& mode
   const TourCorridor corridor(scene.wheelchair, tours);
   ArrangeHooks clear = hooks;
   clear.valid = [&](const std::vector<geometry::Pose2>& p, int moved) {
-    if (!hooks.valid(p, moved)) return false;
     geometry::Object o = scene.objects[static_cast<std::size_t>(moved)];
     o.pose = p[static_cast<std::size_t>(moved)];
-    return corridor.clear(geometry::world_footprint(o));
+    return corridor.clear(geometry::world_footprint(o)) && hooks.valid(p, moved);
   };
+  const auto t0 = std::chrono::steady_clock::now();
   const ArrangeResult a = arrange(model, free, poses, moves, {}, clear, seed, stop);
+  report.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   report.proposals = a.proposals;
   if (a.poses == poses || (stop && stop->load())) return report;
   const auto place_all = [&](const std::vector<geometry::Pose2>& from,
@@ -199,12 +204,11 @@ ArrangeReport arrange_toured(const geometry::Scene& scene, const CostModel& mode
   };
   place_all(poses, a.poses);
   const CostTerms t = toured.plan(a.poses);
-  report.met_before = check_preferences(scene, model, poses).met;
   report.met_after = check_preferences(scene, model, a.poses).met;
-  report.tours_found_before = terms.tours_found;
   report.tours_found_after = t.tours_found;
   report.kept = t.tours_found >= terms.tours_found && t.total() < terms.total();
   if (report.kept) {
+    report.rounds_kept = 1;
     poses = a.poses;
     terms = t;
   } else {

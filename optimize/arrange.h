@@ -68,7 +68,7 @@ struct ArrangeHooks {
 
 struct ArrangeOptions {
   //! Proposals per movable object (the cost is microseconds a proposal).
-  int iterations_per_object = 150;
+  int iterations_per_object = 300;
   //! t_start = this × the input's interior cost; cooling to t_start × t_end_ratio.
   double t_start_fraction = 0.3;
   double t_end_ratio = 1e-4;
@@ -91,6 +91,11 @@ ArrangeResult arrange(const CostModel& model, const std::vector<bool>& movable,
                       const ArrangeOptions& options, const ArrangeHooks& hooks,
                       std::uint64_t seed, const std::atomic<bool>* stop = nullptr);
 
+//! Rounds of arrange_toured() a design runs at most: each starts from the
+//! last kept one, with the corridor of its re-planned tours, and a round
+//! that is not kept ends them.
+inline constexpr int kArrangeRounds = 3;
+
 //! What arrange_toured() needs beyond ArrangeHooks.
 struct ToursHooks {
   //! Moves object `object` to `to` (C-space included).
@@ -101,10 +106,29 @@ struct ToursHooks {
 
 //! What arrange_toured() did (report.json `arrange`).
 struct ArrangeReport {
-  bool kept = false;
+  bool kept = false;  //!< a round was kept
+  int rounds = 0, rounds_kept = 0;
   int proposals = 0;
+  //! Preferences met and tours found before the first round and in the
+  //! layout kept last (the input's when none was kept).
   int met_before = 0, met_after = 0;
   int tours_found_before = 0, tours_found_after = 0;
+  double ms = 0.0;  //!< the annealings' time (the tour rounds not included)
+  //! Adds round `r` (the first when `first`) to this summary.
+  void add(const ArrangeReport& r, bool first) {
+    if (first) {
+      met_before = met_after = r.met_before;
+      tours_found_before = tours_found_after = r.tours_found_before;
+    }
+    ++rounds;
+    proposals += r.proposals;
+    ms += r.ms;
+    if (!r.kept) return;
+    kept = true;
+    ++rounds_kept;
+    met_after = r.met_after;
+    tours_found_after = r.tours_found_after;
+  }
 };
 
 //! The arrangement of a toured layout `poses` (placed; its terms `terms`,

@@ -144,14 +144,11 @@ class DesignRun {
     return schedule;
   }
 
-  //! The annealer's moves, jumps inside the room's bounding box unless the
-  //! options bound them.
+  //! The annealer's moves; jumps inside the room's bounding box unless bounded.
   AnnealOptions moves() const {
     AnnealOptions m = options_.anneal;
-    if (!m.bounds) {
-      const geometry::Box b = geometry::bounding_box(scene_.room.polygon);
-      m.bounds = std::array<double, 4>{b.xmin, b.ymin, b.xmax, b.ymax};
-    }
+    const geometry::Box b = geometry::bounding_box(scene_.room.polygon);
+    if (!m.bounds) m.bounds = std::array<double, 4>{b.xmin, b.ymin, b.xmax, b.ymax};
     return m;
   }
 
@@ -323,6 +320,13 @@ class DesignRun {
     if (progress_) progress_(step);
   }
 
+  //! Tours the placed layout `p` in a round of its own.
+  CostTerms replan(const std::vector<Pose2>& p) {
+    ++iteration_;
+    plan_current();
+    return model_.evaluate(p, tours_, &round_.blockage());
+  }
+
   //! The preference arrangement (optimize/arrange.h) of the best layout
   //! `poses` (placed; toured: `terms` and tours_).
   void arrange_best(std::vector<Pose2>& poses, CostTerms& terms) {
@@ -334,14 +338,14 @@ class DesignRun {
     };
     ToursHooks toured;
     toured.place = [this](int o, const Pose2& to) { place(o, to); };
-    toured.plan = [this](const std::vector<Pose2>& p) {
-      ++iteration_;
-      plan_current();
-      return model_.evaluate(p, tours_, &round_.blockage());
-    };
-    result_.arrange = arrange_toured(scene_, model_, movable_, tours_, poses, terms, moves(), hooks,
-                                     toured, options_.seed, stop_);
-    if (result_.arrange.kept) result_.tours = tours_;
+    toured.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
+    for (int k = 0; k < kArrangeRounds; ++k) {
+      const ArrangeReport a = arrange_toured(scene_, model_, movable_, tours_, poses, terms,
+                                             moves(), hooks, toured, options_.seed + k, stop_);
+      result_.arrange.add(a, k == 0);
+      if (!a.kept) break;
+      result_.tours = tours_;
+    }
   }
 
   //! The final polish (optimize/polish.h) of the best layout, written into
@@ -365,11 +369,7 @@ class DesignRun {
     PolishHooks hooks;
     hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
     hooks.place = [this](int o, const Pose2& to) { place(o, to); };
-    hooks.plan = [this](const std::vector<Pose2>& p) {
-      ++iteration_;
-      plan_current();
-      return model_.evaluate(p, tours_, &round_.blockage());
-    };
+    hooks.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
     hooks.kept = [this] { result_.tours = tours_; };
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);

@@ -3,7 +3,8 @@
 // brute force (exact polygon overlap and segment distances) on thousands of
 // random paths and objects, and arrangements of the shipped rooms that stay
 // valid, lower the interior cost, leave stops and fixed objects in place
-// and repeat for a seed.
+// and repeat for a seed; the layout checks' floating-point shortcuts
+// against the exact predicates alone.
 
 #include "optimize/arrange.h"
 
@@ -187,6 +188,65 @@ TEST(Arrange, ShippedRoomsStayValidLowerTheirInteriorCostAndRepeat) {
       EXPECT_EQ(again.poses, a.poses) << what;
     }
   }
+}
+
+//! object_violation() with the exact predicates only (no shortcut).
+bool exactly_valid(const geometry::Scene& scene, int index) {
+  const auto fp = geometry::world_footprint(scene.objects[static_cast<std::size_t>(index)]);
+  if (geometry::protrusion(fp, scene.room.polygon)) return false;
+  if (geometry::overlap_depth(fp, geometry::door_clear_zone(scene))) return false;
+  for (std::size_t j = 0; j < scene.objects.size(); ++j)
+    if (static_cast<int>(j) != index &&
+        geometry::overlap_depth(fp, geometry::world_footprint(scene.objects[j])))
+      return false;
+  return true;
+}
+
+TEST(LayoutChecks, ShortcutsNeverChangeAnAnswer) {
+  // object_violation() skips an exact predicate when a floating-point test
+  // proves its answer (inside a convex room, polygons apart or in contact
+  // along an axis). Against the exact predicates alone, on random poses of
+  // the shipped rooms' objects (a convex room and an L-shaped one), many
+  // of them flush against a wall or against another object, or just past.
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0, invalid = 0, flush = 0;
+  for (const char* file : {"bedroom.json", "l_studio.json", "office.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const geometry::Box box = geometry::bounding_box(scene.room.polygon);
+    for (int c = 0; c < 1500; ++c) {
+      geometry::Scene work = scene;
+      const int i = static_cast<int>(u(rng) * static_cast<double>(scene.objects.size()));
+      geometry::Object& o = work.objects[static_cast<std::size_t>(i)];
+      const double quarter = std::floor(4.0 * u(rng)) * std::numbers::pi / 2;
+      o.pose = {box.xmin + u(rng) * (box.xmax - box.xmin), box.ymin + u(rng) * (box.ymax - box.ymin),
+                u(rng) < 0.7 ? quarter : 2.0 * std::numbers::pi * u(rng)};
+      const int kind = c % 3;
+      // Flush (or off by a hair) against the room's bounding box or another object.
+      const auto fp = geometry::world_footprint(o);
+      const geometry::Box b = geometry::bounding_box(fp);
+      const double hair = (u(rng) - 0.5) * 4.0 * geometry::kContactTolerance;
+      if (kind == 1) {
+        o.pose.x += (box.xmin - b.xmin) + hair;
+        ++flush;
+      } else if (kind == 2) {
+        const auto& other = work.objects[static_cast<std::size_t>(
+            (i + 1) % static_cast<int>(work.objects.size()))];
+        const geometry::Box ob = geometry::bounding_box(geometry::world_footprint(other));
+        o.pose.x += (ob.xmax - b.xmin) + hair;
+        ++flush;
+      }
+      const bool fast = object_violation(work, i).empty();
+      ASSERT_EQ(fast, exactly_valid(work, i)) << file << " case " << c << " object " << o.id;
+      ++checked;
+      invalid += fast ? 0 : 1;
+    }
+  }
+  EXPECT_EQ(checked, 4500);
+  EXPECT_GT(invalid, 500);
+  EXPECT_LT(invalid, 4400);
+  EXPECT_GT(flush, 2000);
 }
 
 }  // namespace

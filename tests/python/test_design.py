@@ -42,7 +42,15 @@ def compare_with_command(tmp_path, scene_path, seed, iterations, planner, thread
     assert frame.startswith("<iframe sandbox=\"allow-scripts\"")
     assert html.unescape(frame.split('srcdoc="', 1)[1].rsplit('"></iframe>', 1)[0]) == page
     assert [s["iteration"] for s in steps] == list(range(1, iterations + 1))
-    assert steps[-1]["best"] == pytest.approx(result.cost)
+    # The last step's best is the annealer's; the arrangement and the polish
+    # may change the layout after it.
+    post = result.report["arrange"]["rounds_kept"] + result.report["polish"]["kept"] + \
+        result.report["polish"]["squared"]
+    if post == 0:
+        assert steps[-1]["best"] == pytest.approx(result.cost)
+    if result.report["arrange"]["rounds_kept"] > 0 and result.report["polish"]["kept"] == 0 \
+            and result.report["polish"]["squared"] == 0:
+        assert result.cost < steps[-1]["best"]
     assert not result.stopped
     return result
 
