@@ -30,8 +30,9 @@ other options, scenes or code is refused (exit 2), never mixed in.
   --publish    also copy the figures, summaries and REPRODUCTION.md into
                paper_figures/ (what README and docs embed)
   --status     only say whether paper_figures/ is current: "current" (exit 0) when
-               the code under geometry/, rs/, planning/ and optimize/ at the
-               commit it was made from equals HEAD's, else "stale" (exit 1)
+               the code under geometry/, rs/, planning/ and optimize/ at every
+               commit REPRODUCTION.md names (the run's, and any study run on
+               its own) equals HEAD's, else "stale" (exit 1)
   STUDY ...    timing rs_decomposition rrt_iterations sensitivity small_room ao_graph designs
                hard_rooms design_loop method generalization tradeoff
 
@@ -61,21 +62,26 @@ while [ $# -gt 0 ]; do
 done
 if [ "${status_only:-0}" = 1 ]; then
   # The published results are current when the code that decides them is
-  # HEAD's: the commit they were made from (REPRODUCTION.md's "Code: commit")
-  # has the same geometry/, rs/, planning/ and optimize/ as HEAD.
-  made=$(grep -o 'Code: commit `[^`]*`' "$root/paper_figures/REPRODUCTION.md" 2>/dev/null | head -1 |
-         sed 's/.*`\(.*\)`/\1/')
+  # HEAD's: every commit REPRODUCTION.md names (its "Code: commit" and the
+  # commit of each study run on its own) has the same geometry/, rs/,
+  # planning/ and optimize/ as HEAD.
+  rep="$root/paper_figures/REPRODUCTION.md"
+  made=$(grep -o 'commit `[^`]*`' "$rep" 2>/dev/null | sed 's/.*`\(.*\)`/\1/' | awk '!seen[$0]++')
   if [ -z "$made" ]; then echo "reproduce.sh: stale: paper_figures/REPRODUCTION.md names no commit"; exit 1; fi
-  case "$made" in *-dirty) echo "reproduce.sh: stale: published from a tree with uncommitted changes ($made)"; exit 1 ;; esac
-  if ! git -C "$root" cat-file -e "$made^{commit}" 2>/dev/null; then
-    echo "reproduce.sh: stale: commit $made is not in this repository"; exit 1
-  fi
-  changed=$(git -C "$root" diff --name-only "$made" HEAD -- geometry rs planning optimize | wc -l)
-  if [ "$changed" = 0 ]; then
-    echo "reproduce.sh: current: paper_figures/ was made at $made; geometry/, rs/, planning/ and optimize/ are unchanged since"
+  stale=()
+  for c in $made; do
+    case "$c" in *-dirty) echo "reproduce.sh: stale: published from a tree with uncommitted changes ($c)"; exit 1 ;; esac
+    if ! git -C "$root" cat-file -e "$c^{commit}" 2>/dev/null; then
+      echo "reproduce.sh: stale: commit $c is not in this repository"; exit 1
+    fi
+    changed=$(git -C "$root" diff --name-only "$c" HEAD -- geometry rs planning optimize | wc -l)
+    [ "$changed" = 0 ] || stale+=("$c ($changed file(s) changed since)")
+  done
+  if [ ${#stale[@]} = 0 ]; then
+    echo "reproduce.sh: current: paper_figures/ was made at $(echo $made | tr ' ' ','); geometry/, rs/, planning/ and optimize/ are unchanged since"
     exit 0
   fi
-  echo "reproduce.sh: stale: $changed file(s) under geometry/, rs/, planning/, optimize/ changed since $made (run scripts/reproduce.sh --jobs 2 --publish)"
+  echo "reproduce.sh: stale: results made at ${stale[*]} under geometry/, rs/, planning/, optimize/ (REPRODUCTION.md names which studies; run scripts/reproduce.sh --jobs 2 --publish)"
   exit 1
 fi
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "reproduce.sh: --jobs '$jobs': expected a whole number >= 1" >&2; exit 2; }

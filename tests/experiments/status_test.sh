@@ -2,7 +2,8 @@
 # scripts/reproduce.sh --status in a scratch repository: "current" while
 # geometry/, rs/, planning/ and optimize/ equal those of the commit that
 # REPRODUCTION.md names, "stale" after a change there, "current" again for
-# changes elsewhere; a dirty or unknown commit is stale.
+# changes elsewhere; a study run on its own at a commit whose code differs
+# from HEAD's makes it stale; a dirty or unknown commit is stale.
 # Usage: status_test.sh SOURCE_DIR
 set -u
 src="$1"
@@ -28,8 +29,16 @@ git add -A && git commit -qm publish
 expect "published at an ancestor with the same code" 0 "current: paper_figures/ was made at $made"
 echo more >>docs/d.md && git commit -qam docs
 expect "a change outside the code keeps it current" 0 "current"
+old=$made
 echo more >>optimize/b.cpp && git commit -qam code
-expect "a change under optimize/ makes it stale" 1 "stale: 1 file(s)"
+expect "a change under optimize/ makes it stale" 1 "stale: results made at $old (1 file(s) changed since)"
+made=$(git rev-parse --short=12 HEAD)
+printf 'Code: commit `%s`.\nThe `zoo` study at commit `%s`: ...\n' "$made" "$old" >paper_figures/REPRODUCTION.md
+git add -A && git commit -qm republish
+expect "a study made alone at older code is stale" 1 "stale: results made at $old (1 file(s)"
+printf 'Code: commit `%s`.\nThe `zoo` study at commit `%s`: ...\n' "$made" "$made" >paper_figures/REPRODUCTION.md
+git add -A && git commit -qm republish2
+expect "every named commit current" 0 "current: paper_figures/ was made at $made;"
 printf 'Code: commit `%s-dirty`;\n' "$made" >paper_figures/REPRODUCTION.md
 expect "a dirty tree is stale" 1 "uncommitted changes"
 printf 'Code: commit `0123456789ab`;\n' >paper_figures/REPRODUCTION.md
