@@ -16,8 +16,6 @@
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
 #include "optimize/escape.h"
-#include "optimize/arrange.h"
-#include "optimize/polish.h"
 #include "optimize/tour_round.h"
 #include "planning/motion_validator.h"
 
@@ -328,7 +326,7 @@ class DesignRun {
   }
 
   //! The preference arrangement (optimize/arrange.h) of the best layout
-  //! `poses` (placed; toured: `terms` and tours_).
+  //! `poses` (placed; toured: `terms` and result_.tours).
   void arrange_best(std::vector<Pose2>& poses, CostTerms& terms) {
     ArrangeHooks hooks;
     hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
@@ -340,8 +338,11 @@ class DesignRun {
     toured.place = [this](int o, const Pose2& to) { place(o, to); };
     toured.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
     for (int k = 0; k < kArrangeRounds; ++k) {
-      const ArrangeReport a = arrange_toured(scene_, model_, movable_, tours_, poses, terms,
-                                             moves(), hooks, toured, options_.seed + k, stop_);
+      // The best layout's tours: tours_ may hold the last proposal's, whose
+      // tail an early rejection left to the threads' timing.
+      const ArrangeReport a = arrange_toured(scene_, model_, movable_, result_.tours, poses,
+                                             terms, moves(), hooks, toured, options_.seed + k,
+                                             stop_);
       result_.arrange.add(a, k == 0);
       if (!a.kept) break;
       result_.tours = tours_;
@@ -373,9 +374,7 @@ class DesignRun {
     hooks.kept = [this] { result_.tours = tours_; };
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
-    result_.polish.tried = pr.tried;
-    result_.polish.kept = pr.kept;
-    result_.polish.squared = pr.squared;
+    static_cast<PolishResult&>(result_.polish) = pr;
     if (!result_.arrange.kept && pr.kept == 0 && pr.squared == 0) return;
     for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
     result_.final = terms;

@@ -35,6 +35,7 @@
 #include "optimize/arrange.h"
 #include "optimize/costs.h"
 #include "optimize/planner_config.h"
+#include "optimize/polish.h"
 #include "optimize/preferences.h"
 #include "optimize/sequences.h"
 #include "planning/reach_gate.h"
@@ -126,8 +127,7 @@ struct DesignResult {
   //! and whether it was kept (at least the same tours, a lower total cost).
   ArrangeReport arrange;
   //! The final polish (optimize/polish.h): poses planned and kept.
-  struct Polish {
-    int tried = 0, kept = 0, squared = 0;
+  struct Polish : PolishResult {
     int tours_found_before = 0, met_before = 0;  //!< of the annealer's best layout
   } polish;
   long legs_refused = 0;     //!< legs the free grid proved impossible

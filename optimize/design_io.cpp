@@ -250,6 +250,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
           {"polish",
            {{"tried", result.polish.tried},
             {"kept", result.polish.kept},
+            {"slid", result.polish.slid},
             {"squared", result.polish.squared},
             {"tours_found_before", result.polish.tours_found_before},
             {"preferences_met_before", result.polish.met_before}}},

@@ -39,6 +39,25 @@ bool heading_fixed(const geometry::Scene& scene, int object) {
   return false;
 }
 
+//! A heading this far off its preference (radians, 20°) is a gross miss:
+//! a bed turned sideways, a TV facing away.
+constexpr double kGrossAngle = 20.0 * std::numbers::pi / 180.0;
+
+//! What the polish increases: preferences met, less one for every angle
+//! preference grossly missed. A layout that meets an angle at the price of
+//! a distance is better (a designer sees a wrong heading at a glance); one
+//! that meets a distance at the price of a gross angle is not.
+int score(const PreferenceReport& r) {
+  int gross = 0;
+  for (const PreferenceCheck& c : r.checks) gross += c.angular() && c.residual > kGrossAngle;
+  return r.met - gross;
+}
+
+//! Spacing of the places tried along each wall, metres, and how many of
+//! the best are planned per object.
+constexpr double kSlideStep = 0.2;
+constexpr std::size_t kSlideTries = 3;
+
 //! Headings this close to square (radians, about 0.06°) are left alone.
 constexpr double kSquareTolerance = 1e-3;
 
@@ -50,6 +69,29 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::atomic<bool>* stop) {
   PolishResult out;
   PreferenceReport report = check_preferences(scene, model, poses);
+  // Places `moves`, plans, and keeps them when every tour found before is
+  // still found (`met` is the preference report of the moved layout); else
+  // puts the objects back.
+  auto try_moves = [&](const std::vector<std::pair<int, geometry::Pose2>>& moves,
+                       PreferenceReport& met) {
+    std::vector<geometry::Pose2> q = poses;
+    for (const auto& [k, pose] : moves) {
+      q[static_cast<std::size_t>(k)] = pose;
+      hooks.place(k, pose);
+    }
+    const CostTerms t = hooks.plan(q);
+    if (t.tours_found >= terms.tours_found) {
+      poses = std::move(q);
+      terms = t;
+      report = std::move(met);
+      ++out.kept;
+      hooks.kept();
+      return true;
+    }
+    for (auto it = moves.rbegin(); it != moves.rend(); ++it)
+      hooks.place(it->first, poses[static_cast<std::size_t>(it->first)]);
+    return false;
+  };
   // Two passes: a pose kept in the first can make a partner's pose meet its
   // relation in the second.
   for (int pass = 0; pass < 2 && report.met < report.total; ++pass) {
@@ -62,6 +104,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                                      });
       if (!unmet) continue;
       const int object = static_cast<int>(i);
+      bool kept = false;
       for (const geometry::Pose2& to : preferred_poses(scene, model, poses, object)) {
         if (out.tried >= max_tries || (stop && stop->load())) break;
         std::vector<geometry::Pose2> p = poses;
@@ -72,7 +115,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         // preferred poses (a bed turned round with the TV that faces it).
         std::vector<std::pair<int, geometry::Pose2>> moves{{object, to}};
         PreferenceReport best = next;
-        if (next.met <= report.met) {
+        if (score(next) <= score(report)) {
           for (const int j : partners(scene, object)) {
             if (!movable[static_cast<std::size_t>(j)]) continue;
             for (const geometry::Pose2& to_j : preferred_poses(scene, model, p, j)) {
@@ -80,32 +123,42 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
               q[static_cast<std::size_t>(j)] = to_j;
               if (!hooks.valid(q, j)) continue;
               PreferenceReport both = check_preferences(scene, model, q);
-              if (both.met > best.met) {
+              if (score(both) > score(best)) {
                 best = std::move(both);
                 moves = {{object, to}, {j, to_j}};
               }
             }
           }
         }
-        if (best.met <= report.met) continue;
+        if (score(best) <= score(report)) continue;
         ++out.tried;
-        std::vector<geometry::Pose2> q = poses;
-        CostTerms t;
-        for (const auto& [k, pose] : moves) {
-          q[static_cast<std::size_t>(k)] = pose;
-          hooks.place(k, pose);
-        }
-        t = hooks.plan(q);
-        if (t.tours_found >= terms.tours_found) {
-          poses = std::move(q);
-          terms = t;
-          report = std::move(best);
-          ++out.kept;
-          hooks.kept();
+        if (try_moves(moves, best)) {
+          kept = true;
           break;
         }
-        for (auto it = moves.rbegin(); it != moves.rend(); ++it)
-          hooks.place(it->first, poses[static_cast<std::size_t>(it->first)]);
+      }
+      if (kept || out.tried >= max_tries || (stop && stop->load())) continue;
+      // The spots straight across are taken: slide along the walls. The
+      // valid places that meet the most preferences are planned, nearest
+      // first among equals.
+      std::vector<std::pair<PreferenceReport, geometry::Pose2>> better;
+      for (const geometry::Pose2& to : wall_slides(scene, model, poses, object, kSlideStep)) {
+        std::vector<geometry::Pose2> p = poses;
+        p[i] = to;
+        if (!hooks.valid(p, object)) continue;
+        PreferenceReport next = check_preferences(scene, model, p);
+        if (score(next) > score(report)) better.emplace_back(std::move(next), to);
+      }
+      std::stable_sort(better.begin(), better.end(), [](const auto& a, const auto& b) {
+        return score(a.first) > score(b.first);
+      });
+      for (std::size_t k = 0; k < better.size() && k < kSlideTries; ++k) {
+        if (out.tried >= max_tries || (stop && stop->load())) break;
+        ++out.tried;
+        if (try_moves({{object, better[k].second}}, better[k].first)) {
+          ++out.slid;
+          break;
+        }
       }
     }
   }
@@ -126,7 +179,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     p[i].theta = geometry::wrap_angle(normal + square);
     if (!hooks.valid(p, object)) continue;
     PreferenceReport next = check_preferences(scene, model, p);
-    if (next.met < report.met) continue;
+    if (score(next) < score(report)) continue;
     ++out.tried;
     hooks.place(object, p[i]);
     const CostTerms t = hooks.plan(p);

@@ -35,6 +35,7 @@ struct PolishHooks {
 struct PolishResult {
   int tried = 0;  //!< poses planned
   int kept = 0;   //!< poses kept that meet more preferences
+  int slid = 0;     //!< of `kept`, poses found sliding along a wall
   int squared = 0;  //!< objects turned square to their wall (no heading preference)
 };
 

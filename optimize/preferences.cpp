@@ -198,6 +198,30 @@ std::vector<Pose2> preferred_poses(const geometry::Scene& scene, const CostModel
   return out;
 }
 
+std::vector<Pose2> wall_slides(const geometry::Scene& scene, const CostModel& model,
+                               const std::vector<Pose2>& poses, int object, double step) {
+  std::vector<Pose2> out;
+  const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
+  if (!o.wall || !o.wall->distance || !(step > 0.0)) return out;
+  const Pose2 now = pose_of(poses, object);
+  std::vector<std::pair<double, Pose2>> ranked;
+  for (int e = 0; e < static_cast<int>(scene.room.polygon.size()); ++e) {
+    const double theta =
+        o.wall->angle ? model.wall_normal_angle(e) + *o.wall->angle : now.theta;
+    const auto line = wall_line(scene, o, e, theta, *o.wall->distance);
+    if (!line) continue;
+    const int n = static_cast<int>(std::floor((line->hi - line->lo) / step));
+    for (int j = 0; j <= n + 1; ++j) {
+      const Pose2 at = line->at(j <= n ? line->lo + j * step : line->hi);
+      ranked.emplace_back(geometry::norm(at.position() - now.position()), at);
+    }
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& r : ranked) out.push_back(r.second);
+  return out;
+}
+
 std::optional<Pose2> wall_slot(const geometry::Scene& scene, int object, std::mt19937_64& rng) {
   const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
   if (!o.wall || !o.wall->distance) return std::nullopt;

@@ -75,6 +75,15 @@ std::vector<geometry::Pose2> preferred_poses(const geometry::Scene& scene, const
                                              const std::vector<geometry::Pose2>& poses,
                                              int object);
 
+//! Poses of `object` against every wall at its wanted distance and angle,
+//! spaced `step` metres along each wall's extent (ends included), nearest
+//! the current position first: the places a wall preference can be met when
+//! the spot straight across from the object is taken. Empty when the object
+//! has no wall distance preference.
+std::vector<geometry::Pose2> wall_slides(const geometry::Scene& scene, const CostModel& model,
+                                         const std::vector<geometry::Pose2>& poses, int object,
+                                         double step);
+
 //! One pose of `object` against a wall drawn at random (when it has a wall
 //! preference; its heading and distance as wanted, its place along the wall
 //! uniform): a "wall slot" move. nullopt when the object has none.

@@ -115,7 +115,7 @@ TEST(Preferences, ResidualsMatchHandComputation) {
 TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
   std::mt19937_64 rng(35);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  int checked = 0;
+  int checked = 0, slides_checked = 0;
   for (int room = 0; room < 300; ++room) {
     // A rectangle or an L of random proportions, counter-clockwise.
     const double w = 3 + 5 * u(rng), h = 3 + 4 * u(rng);
@@ -154,7 +154,15 @@ TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
     std::vector<Pose2> p = poses_of(s);
     for (int trial = 0; trial < 10; ++trial) {
       p[0] = {w * u(rng), h * u(rng), 2 * kPi * u(rng)};
-      const auto candidates = preferred_poses(s, model, p, 0);
+      auto candidates = preferred_poses(s, model, p, 0);
+      // The places along every wall (wall_slides) as well, nearest first.
+      const auto slides = wall_slides(s, model, p, 0, 0.2);
+      EXPECT_FALSE(slides.empty());
+      for (std::size_t k = 1; k < slides.size(); ++k)
+        EXPECT_LE(geometry::norm(slides[k - 1].position() - p[0].position()),
+                  geometry::norm(slides[k].position() - p[0].position()));
+      slides_checked += static_cast<int>(slides.size());
+      candidates.insert(candidates.end(), slides.begin(), slides.end());
       for (const Pose2& c : candidates) {
         // Each wall pose touches its wall's line at the wanted distance with
         // the wanted heading: then, wherever it is inside the room and its
@@ -174,6 +182,7 @@ TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
     }
   }
   EXPECT_GT(checked, 1000);
+  EXPECT_GT(slides_checked, 10000);
 }
 
 TEST(Preferences, PreferenceMovesNeverLeaveTheLayoutInvalid) {
