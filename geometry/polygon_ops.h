@@ -6,6 +6,8 @@
 // predicates protrusion() and overlap_depth() with kContactTolerance; the
 // exact ones serve the wheelchair, whose C-space answers are certified.
 
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -81,6 +83,39 @@ std::vector<Polygon> convex_partition(const Polygon& polygon);
 //! exceeds the true hull; callers needing a cover take supports over all the
 //! points instead.
 std::vector<Vec2> convex_hull_doubles(std::vector<Vec2> points);
+//! Separating-axis scan in doubles: for each edge normal of `a`, then of
+//! `b` (edges of zero length skipped), calls `found(overlap)` with the
+//! length the two polygons' projections on it share (negative: the gap
+//! between them) and returns true at the first call that returns true. For
+//! convex polygons, an axis with a negative overlap separates them (the
+//! separating axis theorem); callers that need an exact answer use it only
+//! as a shortcut whose margin covers the rounding.
+template <class Found>
+bool any_edge_axis(const Polygon& a, const Polygon& b, Found&& found) {
+  for (const Polygon* p : {&a, &b}) {
+    const std::size_t n = p->size();
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 e = (*p)[(i + 1) % n] - (*p)[i];
+      const double len = std::hypot(e.x, e.y);
+      if (!(len > 0.0)) continue;
+      const Vec2 axis{-e.y / len, e.x / len};
+      double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
+      for (const Vec2& v : a) {
+        const double d = v.x * axis.x + v.y * axis.y;
+        amin = std::min(amin, d);
+        amax = std::max(amax, d);
+      }
+      for (const Vec2& v : b) {
+        const double d = v.x * axis.x + v.y * axis.y;
+        bmin = std::min(bmin, d);
+        bmax = std::max(bmax, d);
+      }
+      if (found(std::min(amax, bmax) - std::max(amin, bmin))) return true;
+    }
+  }
+  return false;
+}
+
 //! Convex pieces covering (room bounding box grown by `margin`) minus the room.
 std::vector<Polygon> complement_pieces(const Polygon& room, double margin);
 

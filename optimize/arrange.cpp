@@ -8,61 +8,16 @@
 #include <chrono>
 #include <cmath>
 
+#include "geometry/polygon_ops.h"
 #include "optimize/preferences.h"
 
 namespace hrs::optimize {
 
 namespace {
 
-using geometry::Vec2;
-
-//! Convex hull (Andrew's monotone chain), counter-clockwise.
-geometry::Polygon hull(geometry::Polygon p) {
-  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  });
-  if (p.size() < 3) return p;
-  geometry::Polygon h(2 * p.size());
-  std::size_t k = 0;
-  const auto cross = [](const Vec2& o, const Vec2& a, const Vec2& b) {
-    return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
-  };
-  for (std::size_t i = 0; i < p.size(); ++i) {
-    while (k >= 2 && cross(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
-    h[k++] = p[i];
-  }
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0;) {
-    while (k >= t && cross(h[k - 2], h[k - 1], p[i]) <= 0.0) --k;
-    h[k++] = p[i];
-  }
-  h.resize(k - 1);
-  return h;
-}
-
 //! True when some edge normal of `a` or `b` separates them by more than `gap`.
 bool separated(const geometry::Polygon& a, const geometry::Polygon& b, double gap) {
-  for (const geometry::Polygon* p : {&a, &b}) {
-    const std::size_t n = p->size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 e = (*p)[(i + 1) % n] - (*p)[i];
-      const double len = std::hypot(e.x, e.y);
-      if (!(len > 0.0)) continue;
-      const Vec2 axis{-e.y / len, e.x / len};
-      double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
-      for (const Vec2& v : a) {
-        const double d = v.x * axis.x + v.y * axis.y;
-        amin = std::min(amin, d);
-        amax = std::max(amax, d);
-      }
-      for (const Vec2& v : b) {
-        const double d = v.x * axis.x + v.y * axis.y;
-        bmin = std::min(bmin, d);
-        bmax = std::max(bmax, d);
-      }
-      if (bmin - amax > gap || amin - bmax > gap) return true;
-    }
-  }
-  return false;
+  return geometry::any_edge_axis(a, b, [gap](double overlap) { return overlap < -gap; });
 }
 
 }  // namespace
@@ -106,7 +61,7 @@ TourCorridor::TourCorridor(const geometry::Wheelchair& chair,
 
 bool TourCorridor::clear(const geometry::Polygon& footprint) const {
   if (shapes_.empty()) return true;
-  const geometry::Polygon h = hull(footprint);
+  const geometry::Polygon h = geometry::convex_hull_doubles(footprint);
   geometry::Box b = geometry::bounding_box(h);
   b.xmin -= margin_;
   b.ymin -= margin_;

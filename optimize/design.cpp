@@ -372,6 +372,7 @@ class DesignRun {
     hooks.place = [this](int o, const Pose2& to) { place(o, to); };
     hooks.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
     hooks.kept = [this] { result_.tours = tours_; };
+    hooks.tours = [this]() -> const std::vector<planning::Tour>& { return result_.tours; };
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
     static_cast<PolishResult&>(result_.polish) = pr;

@@ -100,28 +100,7 @@ bool inside_convex_room(const geometry::Polygon& fp, const geometry::Polygon& ro
 //! both boundaries (it leaves one polygon's projection, so the polygon,
 //! within that distance), so overlap_depth() finds no overlap beyond contact.
 bool contact_at_most(const geometry::Polygon& a, const geometry::Polygon& b) {
-  for (const geometry::Polygon* p : {&a, &b}) {
-    const std::size_t n = p->size();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 e = (*p)[(i + 1) % n] - (*p)[i];
-      const double len = std::hypot(e.x, e.y);
-      if (!(len > 0.0)) continue;
-      const Vec2 axis{-e.y / len, e.x / len};
-      double amin = 1e300, amax = -1e300, bmin = 1e300, bmax = -1e300;
-      for (const Vec2& v : a) {
-        const double d = v.x * axis.x + v.y * axis.y;
-        amin = std::min(amin, d);
-        amax = std::max(amax, d);
-      }
-      for (const Vec2& v : b) {
-        const double d = v.x * axis.x + v.y * axis.y;
-        bmin = std::min(bmin, d);
-        bmax = std::max(bmax, d);
-      }
-      if (std::min(amax, bmax) - std::max(amin, bmin) <= kSlack) return true;
-    }
-  }
-  return false;
+  return geometry::any_edge_axis(a, b, [](double overlap) { return overlap <= kSlack; });
 }
 
 bool boxes_apart(const geometry::Box& a, const geometry::Box& b) {

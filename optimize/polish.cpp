@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
+#include "optimize/arrange.h"
 #include "optimize/preferences.h"
 
 namespace hrs::optimize {
@@ -69,6 +71,15 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::atomic<bool>* stop) {
   PolishResult out;
   PreferenceReport report = check_preferences(scene, model, poses);
+  // The kept layout's tour corridor (optimize/arrange.h), rebuilt on a keep.
+  std::optional<TourCorridor> corridor;
+  if (hooks.tours) corridor.emplace(scene.wheelchair, hooks.tours());
+  const auto clear = [&](int object, const geometry::Pose2& to) {
+    if (!corridor) return true;
+    geometry::Object o = scene.objects[static_cast<std::size_t>(object)];
+    o.pose = to;
+    return corridor->clear(geometry::world_footprint(o));
+  };
   // Places `moves`, plans, and keeps them when every tour found before is
   // still found (`met` is the preference report of the moved layout); else
   // puts the objects back.
@@ -86,6 +97,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       report = std::move(met);
       ++out.kept;
       hooks.kept();
+      if (corridor) corridor.emplace(scene.wheelchair, hooks.tours());
       return true;
     }
     for (auto it = moves.rbegin(); it != moves.rend(); ++it)
@@ -139,23 +151,30 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       }
       if (kept || out.tried >= max_tries || (stop && stop->load())) continue;
       // The spots straight across are taken: slide along the walls. The
-      // valid places that meet the most preferences are planned, nearest
-      // first among equals.
-      std::vector<std::pair<PreferenceReport, geometry::Pose2>> better;
+      // valid places that score higher are planned: those clear of the
+      // tours' corridor first (they seldom cost a tour), then the highest
+      // score, then the nearest.
+      struct Slide {
+        bool clear;
+        PreferenceReport report;
+        geometry::Pose2 to;
+      };
+      std::vector<Slide> better;
       for (const geometry::Pose2& to : wall_slides(scene, model, poses, object, kSlideStep)) {
         std::vector<geometry::Pose2> p = poses;
         p[i] = to;
         if (!hooks.valid(p, object)) continue;
         PreferenceReport next = check_preferences(scene, model, p);
-        if (score(next) > score(report)) better.emplace_back(std::move(next), to);
+        if (score(next) > score(report)) better.push_back({clear(object, to), std::move(next), to});
       }
-      std::stable_sort(better.begin(), better.end(), [](const auto& a, const auto& b) {
-        return score(a.first) > score(b.first);
+      std::stable_sort(better.begin(), better.end(), [](const Slide& a, const Slide& b) {
+        if (a.clear != b.clear) return a.clear;
+        return score(a.report) > score(b.report);
       });
       for (std::size_t k = 0; k < better.size() && k < kSlideTries; ++k) {
         if (out.tried >= max_tries || (stop && stop->load())) break;
         ++out.tried;
-        if (try_moves({{object, better[k].second}}, better[k].first)) {
+        if (try_moves({{object, better[k].to}}, better[k].report)) {
           ++out.slid;
           break;
         }

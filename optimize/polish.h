@@ -18,6 +18,7 @@
 #include "geometry/pose.h"
 #include "geometry/scene.h"
 #include "optimize/costs.h"
+#include "planning/tour_types.h"
 
 namespace hrs::optimize {
 
@@ -30,6 +31,9 @@ struct PolishHooks {
   std::function<CostTerms(const std::vector<geometry::Pose2>& poses)> plan;
   //! The pose tried last was kept: snapshot its tours.
   std::function<void()> kept;
+  //! The tours of the layout kept last (may be unset): the places along the
+  //! walls that stay clear of their corridor are tried first.
+  std::function<const std::vector<planning::Tour>&()> tours;
 };
 
 struct PolishResult {
