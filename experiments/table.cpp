@@ -1,14 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "experiments/table.h"
 
-#include <unistd.h>
-
-#include <atomic>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -16,6 +10,7 @@
 
 #include "geometry/error.h"
 #include "geometry/scene.h"
+#include "optimize/design_io.h"
 
 namespace hrs::experiments {
 
@@ -187,13 +182,6 @@ Table parse_csv(const std::string& text, const std::string& label) {
   return rows;
 }
 
-namespace {
-
-//! ": " and the system's reason for the last failed call, or "" without one.
-std::string reason(int err) { return err ? std::string(": ") + std::strerror(err) : ""; }
-
-}  // namespace
-
 std::string read_text(const std::filesystem::path& path) {
   // Bounded like every input (geometry::limits::kInputBytes), with the path
   // in the message.
@@ -201,30 +189,7 @@ std::string read_text(const std::filesystem::path& path) {
 }
 
 void write_text_atomic(const std::filesystem::path& path, const std::string& text) {
-  // Unique per process and call: jobs of one process may write the same file.
-  static std::atomic<long> counter{0};
-  const std::filesystem::path tmp = path.string() + ".tmp." +
-                                    std::to_string(static_cast<long>(::getpid())) + "." +
-                                    std::to_string(counter.fetch_add(1));
-  {
-    std::FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) throw OutputError(path.string() + ": cannot write file" + reason(errno));
-    int err = 0;
-    if (std::fwrite(text.data(), 1, text.size(), f) != text.size() || std::fflush(f) != 0 ||
-        ::fsync(::fileno(f)) != 0)
-      err = errno ? errno : EIO;
-    if (std::fclose(f) != 0 && !err) err = errno ? errno : EIO;
-    if (err) {
-      std::remove(tmp.c_str());
-      throw OutputError(path.string() + ": write error" + reason(err));
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::remove(tmp.c_str());
-    throw OutputError(path.string() + ": cannot replace file: " + ec.message());
-  }
+  optimize::write_files_atomic({{path, text}});
 }
 
 }  // namespace hrs::experiments

@@ -5,6 +5,7 @@
 #include "optimize/design_io.h"
 #include "optimize/preferences_json.h"
 
+#include <atomic>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
@@ -45,12 +46,16 @@ json terms_json(const CostTerms& t) {
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-//! A temporary name beside `path`, unique to this process.
+//! A temporary name beside `path`, unique to this process and call: jobs
+//! of one process (the experiments) may write the same file at once.
 std::filesystem::path temporary_beside(const std::filesystem::path& path) {
+  static std::atomic<long> calls{0};
   std::string name = ".";
   name += path.filename().string();
   name += ".tmp-";
   name += std::to_string(::getpid());
+  name += "-";
+  name += std::to_string(calls.fetch_add(1));
   return path.parent_path() / name;
 }
 
