@@ -317,7 +317,10 @@ TEST(DesignLoop, LargeClearanceWeightWidensTheToursCorridors) {
 namespace hrs::optimize {
 namespace {
 
-TEST(DesignLoop, PolishNeverLosesAFoundTourAndOnlyAddsPreferences) {
+// The score the polish raises is checked by Polish.KeepsOnlyHigherScoring-
+// LayoutsThatLoseNoTour (arrange_test.cpp); here, in whole designs: no tour
+// lost, a valid layout, and the counts consistent.
+TEST(DesignLoop, PolishNeverLosesAFoundTour) {
   int kept = 0, squared = 0, runs = 0;
   for (const std::string file : {"bedroom.json", "office.json", "living_room.json"}) {
     const geometry::Scene scene =
@@ -332,8 +335,6 @@ TEST(DesignLoop, PolishNeverLosesAFoundTourAndOnlyAddsPreferences) {
       ++runs;
       kept += r.polish.kept;
       EXPECT_GE(r.final.tours_found, r.polish.tours_found_before) << what;
-      EXPECT_GE(r.preferences.met, r.polish.met_before) << what;
-      if (r.polish.kept > 0) EXPECT_GT(r.preferences.met, r.polish.met_before) << what;
       EXPECT_LE(r.polish.kept + r.polish.squared, r.polish.tried) << what;
       squared += r.polish.squared;
       EXPECT_TRUE(r.valid) << what;

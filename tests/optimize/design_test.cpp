@@ -222,6 +222,11 @@ TEST(Design, DefaultPresetIsIdenticalWithOneAndTwoThreads) {
       options.seed = 1;
       options.threads = run == 0 ? 1 : 2;
       const auto r = design(scene, options);
+      // The situation the test is about: proposals rejected early (their
+      // tours cancelled), then an arrangement and a polish.
+      EXPECT_GT(r.early.proposals, 0);
+      EXPECT_EQ(r.threads, options.threads);
+      EXPECT_GT(r.arrange.proposals, 0);
       layout[run] = geometry::write_scene(r.layout);
       tours[run] = tours_document(r);
     }

@@ -161,9 +161,10 @@ TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
       for (std::size_t k = 1; k < slides.size(); ++k)
         EXPECT_LE(geometry::norm(slides[k - 1].position() - p[0].position()),
                   geometry::norm(slides[k].position() - p[0].position()));
-      slides_checked += static_cast<int>(slides.size());
+      const std::size_t first_slide = candidates.size();
       candidates.insert(candidates.end(), slides.begin(), slides.end());
-      for (const Pose2& c : candidates) {
+      for (std::size_t k = 0; k < candidates.size(); ++k) {
+        const Pose2& c = candidates[k];
         // Each wall pose touches its wall's line at the wanted distance with
         // the wanted heading: then, wherever it is inside the room and its
         // wall is the nearest, both wall terms are met.
@@ -178,11 +179,12 @@ TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
         const PreferenceReport r = check_preferences(s, model, q);
         EXPECT_EQ(r.met, 2) << "room " << room << " trial " << trial;
         ++checked;
+        if (k >= first_slide) ++slides_checked;
       }
     }
   }
   EXPECT_GT(checked, 1000);
-  EXPECT_GT(slides_checked, 10000);
+  EXPECT_GT(slides_checked, 5000);  // slides that reached the check
 }
 
 TEST(Preferences, PreferenceMovesNeverLeaveTheLayoutInvalid) {
