@@ -64,6 +64,22 @@ void BM_RsShortestLength(benchmark::State& state) {
 }
 BENCHMARK(BM_RsShortestLength)->Arg(0)->Arg(1);
 
+//! The same solver at each pruning level (second argument): 0 evaluates all
+//! 48 words, 1 skips families by their bounds (the solver before the
+//! per-candidate pre-checks), 2 is what shortest_length uses.
+void BM_RsShortestPruning(benchmark::State& state) {
+  const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
+  const auto level = static_cast<hrs::rs::Pruning>(state.range(1));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Pair& p = pairs[i++ & 4095];
+    benchmark::DoNotOptimize(hrs::rs::shortest_word(p.a, p.b, kRadius, level));
+  }
+  const char* names[] = {"none", "family bounds", "full"};
+  state.SetLabel(std::string(state.range(0) == 0 ? "far, " : "near, ") + names[state.range(1)]);
+}
+BENCHMARK(BM_RsShortestPruning)->ArgsProduct({{0, 1}, {0, 1, 2}});
+
 void BM_RsShortestPath(benchmark::State& state) {
   const auto& pairs = pairs_for(static_cast<int>(state.range(0)));
   std::size_t i = 0;

@@ -98,8 +98,7 @@ Pose2 Decomposition::relative(const Pose2& from, const Pose2& to) const {
 }
 
 std::int32_t Decomposition::nearest_sample(const Pose2& q) const {
-  const bool inside = std::abs(q.x) <= options_.room_width && std::abs(q.y) <= options_.room_depth;
-  return inside ? grid_index_.nearest(q) : tree_.nearest(q);
+  return in_box(q) ? grid_index_.nearest(q) : tree_.nearest(q);
 }
 
 int Decomposition::nearest_word(const Pose2& from, const Pose2& to) const {
@@ -110,14 +109,19 @@ int Decomposition::nearest_sample_word(const Pose2& q) const {
   return samples_[nearest_sample(q)].word;
 }
 
+bool Decomposition::in_box(const Pose2& q) const {
+  return std::abs(q.x) <= options_.room_width && std::abs(q.y) <= options_.room_depth;
+}
+
 int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {
   const Pose2 q = relative(from, to);
   if (!grid_) return nearest_sample_word(q);
+  if (!in_box(q)) return shortest_word({}, q, options_.radius).word;
   const Grid& g = *grid_;
   const double fx = (q.x + options_.room_width) / g.cx;
   const double fy = (q.y + options_.room_depth) / g.cy;
   const double ft = (q.theta + std::numbers::pi) / g.ct;
-  if (!(fx >= 0.0 && fx < g.nx && fy >= 0.0 && fy < g.ny))  // outside the box (or NaN)
+  if (!(fx >= 0.0 && fx < g.nx && fy >= 0.0 && fy < g.ny))  // on the box's far edge (or NaN)
     return nearest_sample_word(q);
   const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
   const int it = std::clamp(static_cast<int>(ft), 0, g.nt - 1);
@@ -135,10 +139,12 @@ int Decomposition::predict_word(const Pose2& from, const Pose2& to) const {
 }
 
 std::optional<Path> Decomposition::predicted_path(const Pose2& from, const Pose2& to) const {
+  if (grid_ && !in_box(relative(from, to))) return shortest_path(from, to, options_.radius);
   return word_path(predict_word(from, to), from, to, options_.radius);
 }
 
 double Decomposition::predicted_length(const Pose2& from, const Pose2& to) const {
+  if (grid_ && !in_box(relative(from, to))) return shortest_length(from, to, options_.radius);
   return word_length(predict_word(from, to), from, to, options_.radius);
 }
 

@@ -11,7 +11,10 @@
 // The shortest path is the minimum over the 48 words of Reeds and Shepp's
 // sufficient family (CSC, CCC, CCCC, CCSC, CCSCC with time-flip, reflection
 // and backwards symmetries), evaluated in closed form with shared trigonometry
-// and lower-bound pruning; see rs/reeds_shepp.cpp for the formulas' sources.
+// and lower-bound pruning: a candidate's arcs are first known as directions
+// (products of |A|, |B| and algebraic rotations), so a candidate that breaks
+// a sign constraint or cannot be shorter costs no atan2; see
+// rs/reeds_shepp.cpp for the formulas' sources.
 
 #include <algorithm>
 #include <cmath>
@@ -98,6 +101,16 @@ struct ShortestWord {
 //! The shortest path's length and word (no allocation); same result as
 //! shortest_path().
 ShortestWord shortest_word(const Pose2& from, const Pose2& to, double radius);
+//! How much of the search the solver skips. Every level finds a shortest
+//! path; kNone evaluates all 48 words, kFamilyBounds skips a formula family
+//! whose lower bound is not below the best so far, kFull (what every other
+//! function here uses) also skips single candidates whose arcs' directions
+//! break a sign constraint or bound the length above the best. kFull and
+//! kFamilyBounds give the same answer bit for bit; kNone may pick another
+//! word among words whose lengths tie to rounding.
+enum class Pruning { kNone, kFamilyBounds, kFull };
+//! shortest_word() with the given pruning (tests and benchmarks).
+ShortestWord shortest_word(const Pose2& from, const Pose2& to, double radius, Pruning pruning);
 
 //! Length of the shortest path of one given word from `from` to `to`, or
 //! +infinity when that word cannot connect them (no allocation). Evaluated by

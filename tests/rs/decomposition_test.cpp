@@ -144,7 +144,7 @@ TEST(RsDecomposition, PredictedPathIsValidWhenReturnedAndNeverShorterThanExact) 
 // cell; with the grid off, the word of the sample nearest the query. Both
 // checked against the kd-tree (itself checked against brute force above) on
 // queries from many start poses, including relative poses outside the
-// sampled box (answered without the grid) and from several threads at once
+// sampled box (answered exactly there) and from several threads at once
 // (cells filled concurrently must hold the same words).
 TEST(RsDecomposition, GridAnswersTheShortestWordAtItsCellCentre) {
   DecompositionOptions o = small_options();
@@ -168,7 +168,7 @@ TEST(RsDecomposition, GridAnswersTheShortestWordAtItsCellCentre) {
     });
   for (auto& th : threads) th.join();
   const double cell = grid.options().grid_cell, pi = std::numbers::pi;
-  int inside = 0, agree_with_query = 0;
+  int inside = 0, outside = 0, agree_with_query = 0;
   for (std::size_t i = 0; i < queries.size(); ++i) {
     const auto& [a, b] = queries[i];
     EXPECT_EQ(plain.predict_word(a, b), plain.nearest_word(a, b));
@@ -183,7 +183,13 @@ TEST(RsDecomposition, GridAnswersTheShortestWordAtItsCellCentre) {
     const double cx = 2 * o.room_width / nx, cy = 2 * o.room_depth / ny, ct = 2 * pi / nt;
     const double fx = (q.x + o.room_width) / cx, fy = (q.y + o.room_depth) / cy;
     if (!(fx >= 0 && fx < nx && fy >= 0 && fy < ny)) {
-      EXPECT_EQ(words[i], grid.nearest_word(a, b)) << i;  // outside: no grid
+      // Outside the box: the exact answer, not a sample's.
+      ++outside;
+      EXPECT_EQ(words[i], shortest_word({}, q, o.radius).word) << i;
+      EXPECT_EQ(grid.predicted_length(a, b), shortest_length(a, b, o.radius)) << i;
+      const auto p = grid.predicted_path(a, b);
+      ASSERT_TRUE(p.has_value());
+      EXPECT_EQ(p->segments, shortest_path(a, b, o.radius).segments) << i;
       continue;
     }
     ++inside;
@@ -194,6 +200,7 @@ TEST(RsDecomposition, GridAnswersTheShortestWordAtItsCellCentre) {
     if (words[i] == shortest_word(a, b, o.radius).word) ++agree_with_query;
   }
   EXPECT_GT(inside, 8000);
+  EXPECT_GT(outside, 1000);
   // A cell is 5 cm × 5°: its centre's word is mostly the query's own.
   EXPECT_GT(agree_with_query, 0.8 * inside);
   std::printf("grid: %d of %d in-box queries answer the query's own shortest word (%.1f%%)\n",
