@@ -29,7 +29,7 @@ struct ReuseRule {
   const char* fallback;
 };
 inline constexpr ReuseRule kPlanReuse{"samples,steering", "samples,steering"};
-inline constexpr ReuseRule kTourReuse{"samples,steering,paths,shortcuts,budget,proofs",
+inline constexpr ReuseRule kTourReuse{"samples,steering,paths,shortcuts,budget",
                                       "samples,steering,paths"};
 
 //! For `hrspace plan` and `hrspace tour`: `planner` is "baseline" or

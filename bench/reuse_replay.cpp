@@ -78,7 +78,6 @@ void replay(benchmark::State& state, const Recording* rec, const std::string& co
       state.counters["legs_planned"] = static_cast<double>(legs.legs_planned);
       state.counters["legs_failed"] = static_cast<double>(legs.legs_failed);
       state.counters["legs_proven"] = static_cast<double>(legs.legs_proven);
-      state.counters["proof_s"] = 1e-3 * legs.proof_ms;
     }
   }
 }
@@ -93,17 +92,17 @@ int main(int argc, char** argv) {
   const char* rooms_env = std::getenv("HRSPACE_REPLAY_ROOMS");
   const std::vector<std::string> rooms =
       bench::split_list(rooms_env ? rooms_env : "bedroom,office,living_room");
-  // "all" (the defaults), all but one of the heuristics, with the opt-in
-  // proofs, then each technique alone.
+  // "all" (the defaults), all but one of the heuristics, then each
+  // technique alone.
   // HRSPACE_REPLAY_CONFIGS replaces the list ('all;all,backoff=60': semicolons
   // when a config has commas).
   const char* configs_env = std::getenv("HRSPACE_REPLAY_CONFIGS");
   const std::vector<std::string> configs =
       configs_env ? bench::split_list(configs_env)
                   : std::vector<std::string>{
-                        "baseline",  "all",    "all,-budget", "all,-backoff", "all,proofs",
-                        "paths",     "trees",  "samples",     "steering",     "failures",
-                        "shortcuts", "budget", "metrics",     "backoff",      "proofs"};
+                        "baseline", "all",      "all,-budget", "all,-backoff", "paths",
+                        "trees",    "samples",  "steering",    "failures",     "shortcuts",
+                        "budget",   "metrics",  "backoff"};
   static std::map<std::string, Recording> recordings;
   for (const std::string& room : rooms) {
     Recording& rec = recordings[room];

@@ -84,7 +84,7 @@ int cmd_tour(const Argv& argv) {
                  "(length, rotation, clearance), stats. --planner default (or proposed) serves the legs\n"
                  "through the proposed planner (paper V: decomposition samples and steering,\n"
                  "legs shared within the tour; --reuse to choose among samples, steering,\n"
-                 "paths, shortcuts, budget and proofs).\n"
+                 "paths, shortcuts and budget).\n"
                  "Exit 0 whether or not a tour is found; 2 for a bad scene or an unknown\n"
                  "object id.\n";
     return 0;

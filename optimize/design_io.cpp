@@ -308,8 +308,7 @@ json reuse_json(const DesignResult& result) {
            {{"database", c.database_ms},
             {"repaired", c.repaired_ms},
             {"planned", c.planned_ms},
-            {"failed", c.failed_ms},
-            {"proofs", c.proof_ms}}}};
+            {"failed", c.failed_ms}}}};
 }
 
 }  // namespace

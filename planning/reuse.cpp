@@ -42,8 +42,7 @@ ReusePlanner::ReusePlanner(const geometry::Scene& scene, const geometry::CSpace&
       radius_(scene.wheelchair.turning_radius),
       trees_(cspace, scene.wheelchair.turning_radius, options),
       scene_(scene),
-      failures_(scene_, failure_margin(cspace, tour)),
-      proofs_(scene_, cspace, options.proof_grid, options.proof_cells) {
+      failures_(scene_, failure_margin(cspace, tour)) {
   if (options_.samples || options_.steering) {
     const geometry::Box b = geometry::bounding_box(scene.room.polygon);
     rs::DecompositionOptions d;
@@ -83,7 +82,6 @@ TourHooks ReusePlanner::hooks() {
 
 void ReusePlanner::begin_iteration(std::uint64_t iteration_seed) {
   iteration_seed_ = iteration_seed;
-  proofs_.invalidate();
   slots_.clear();
   leg_requests_.clear();
   unshared_.clear();
@@ -180,29 +178,14 @@ LegResult ReusePlanner::fresh_plan(const LegKey& key, const Pose2& from, const P
       budget = std::max(std::min(options_.backoff_floor, budget), budget >> halvings);
     }
   }
-  const bool staged = options_.proofs && options_.proof_after < budget;
   // The gate is asked, as for the baseline (TourHooks::gate), only once the
   // RRT has run kRefuseAfter iterations in vain: most legs are found or
   // served sooner, and their layouts need no grid fill.
   const GiveUpCheck check{kRefuseAfter, [&] { return gate_->refuses(from, to); }};
-  LegResult r = planner.plan(from, to, seed, tree, staged ? options_.proof_after : budget,
-                             gate_ ? &check : nullptr);
+  LegResult r = planner.plan(from, to, seed, tree, budget, gate_ ? &check : nullptr);
   if (r.gave_up) slot.proven = true;
   add_stats(stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
-  if (!r.found && staged) {
-    const auto t0 = std::chrono::steady_clock::now();
-    slot.proven = proofs_.disconnected(from, to);
-    slot.proof_ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    stats.time_ms += slot.proof_ms;
-    if (!slot.proven) {
-      // Not proven: the rest of the budget, growing the same tree.
-      r = planner.plan(from, to, splitmix64(seed), tree, budget - options_.proof_after);
-      add_stats(stats, r.stats);
-      slot.fresh_iterations += r.stats.iterations;
-    }
-  }
   return r;
 }
 
@@ -235,9 +218,9 @@ LegOutcome ReusePlanner::plan_leg(const LegKey& key, const Pose2& from, const Po
     out.stats.collision_checks += checks;
   }
   LegResult r = fresh_plan(key, from, to, seed, planner, tree, out.stats, slot);
-  // A proven failure is not recorded for `failures`: the proof looked at the
-  // whole layout, not only near the RRT's nodes, so FailureMemory::repeats() could
-  // not vouch for it after a move.
+  // A failure the gate proved is not recorded for `failures`: the gate's grid
+  // looked at the whole layout, not only near the RRT's nodes, so
+  // FailureMemory::repeats() could not vouch for it after a move.
   if (!r.found && options_.failures && !slot.proven) {
     slot.failed_points.reserve(tree.nodes.size() + 1);
     for (const RrtTree::Node& node : tree.nodes) slot.failed_points.push_back(node.pose.position());
@@ -377,7 +360,6 @@ LegOutcome ReusePlanner::resolve(const LegKey& key, const Pose2& from, const Pos
     slot->tree_reused = local.tree_reused;
     slot->failure_reused = local.failure_reused;
     slot->proven = local.proven;
-    slot->proof_ms = local.proof_ms;
     slot->failed_points = std::move(local.failed_points);
     slot->grown = std::move(local.grown);
   }

@@ -36,7 +36,6 @@
 #include "planning/failure_memory.h"
 #include "planning/leg_measures.h"
 #include "planning/path_database.h"
-#include "planning/proof_oracle.h"
 #include "planning/reach_gate.h"
 #include "planning/reuse_counters.h"
 #include "planning/reuse_options.h"
@@ -104,7 +103,7 @@ class ReusePlanner final : public LegProvider {
   //! Stage B: repair, else a fresh plan (with a kept tree when on).
   LegOutcome plan_leg(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                       LegPlanner& planner, ReuseSlot& slot) const;
-  //! The fresh RRT of stage B on `tree` (budget, backoff, a staged proof).
+  //! The fresh RRT of stage B on `tree` (budget, backoff, the gate).
   LegResult fresh_plan(const LegKey& key, const Pose2& from, const Pose2& to, std::uint64_t seed,
                        LegPlanner& planner, RrtTree& tree, LegStats& stats, ReuseSlot& slot) const;
   //! Every technique off: the baseline's own plan, counted per tour.
@@ -136,9 +135,8 @@ class ReusePlanner final : public LegProvider {
   std::unique_ptr<LegMeasures> measures_;
   PathDatabase database_;
   TreeStore trees_;
-  geometry::Scene scene_;           //!< footprints for still_free(), the failures, the proofs
+  geometry::Scene scene_;           //!< footprints for still_free() and the failures
   FailureMemory failures_;          //!< `failures` and `backoff`
-  ProofOracle proofs_;              //!< `proofs`
   double still_free_margin_ = 0.0;  //!< see still_free()
   std::uint64_t iteration_seed_ = 0;
   std::mutex mutex_;  //!< guards slots_, leg_requests_ and the slots' `requested`

@@ -19,7 +19,6 @@ ReuseCounters& ReuseCounters::operator+=(const ReuseCounters& o) {
   repaired_ms += o.repaired_ms;
   planned_ms += o.planned_ms;
   failed_ms += o.failed_ms;
-  proof_ms += o.proof_ms;
   return *this;
 }
 

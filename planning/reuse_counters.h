@@ -28,7 +28,6 @@ struct ReuseCounters {
   //! Work behind the outcomes (wall time, not reproducible): database
   //! validations, repairs, fresh plans found, fresh plans failed.
   double database_ms = 0.0, repaired_ms = 0.0, planned_ms = 0.0, failed_ms = 0.0;
-  double proof_ms = 0.0;  //!< of which proofs (grid updates and searches)
   ReuseCounters& operator+=(const ReuseCounters& other);
 };
 

@@ -5,8 +5,8 @@
 
 namespace hrs::planning {
 
-const std::array<ReuseOptions::Technique, 11>& ReuseOptions::techniques() {
-  static const std::array<Technique, 11> list{{{"samples", &ReuseOptions::samples,
+const std::array<ReuseOptions::Technique, 10>& ReuseOptions::techniques() {
+  static const std::array<Technique, 10> list{{{"samples", &ReuseOptions::samples,
                                                 "RRT samples from the RS-decomposition (§V-A)"},
                                                {"steering", &ReuseOptions::steering,
                                                 "RS look-ups through the decomposition, exact fallback (§V-A)"},
@@ -25,9 +25,7 @@ const std::array<ReuseOptions::Technique, 11>& ReuseOptions::techniques() {
                                                {"backoff", &ReuseOptions::backoff,
                                                 "opt-in: a leg that keeps failing gets half the budget each time, down to 120 (backoff=N; ours)"},
                                                {"speculate", &ReuseOptions::speculate,
-                                                "a tour waiting for a leg plans its own next candidate meanwhile (ours, same results)"},
-                                               {"proofs", &ReuseOptions::proofs,
-                                                "opt-in: a leg unplanned after 300 iterations whose ends a certified grid separates fails (ours; rarely pays)"}}};
+                                                "a tour waiting for a leg plans its own next candidate meanwhile (ours, same results)"}}};
   return list;
 }
 

@@ -9,7 +9,6 @@
 #include <string>
 #include <string_view>
 
-#include "geometry/free_grid.h"
 
 namespace hrs::planning {
 
@@ -63,19 +62,6 @@ struct ReuseOptions {
   bool speculate = true;
   int backoff_floor = 120;      //!< RRT iterations a backed-off fresh plan keeps at least
   int budget_iterations = 300;  //!< RRT iterations of a fresh plan with `budget` on
-  //! Beyond the paper, opt-in (not in "all"): a fresh plan that has not
-  //! found the leg after `proof_after` RRT iterations asks geometry::FreeGrid
-  //! whether the leg's ends are in different components of a certified outer
-  //! approximation of the free C-space; if so no motion exists and the leg
-  //! fails at once, else the RRT goes on with the rest of its budget.
-  //! Measured not to pay (docs/planner.md): the legs the RRT cannot find are
-  //! nearly always connected in that approximation.
-  bool proofs = false;
-  int proof_after = 300;                 //!< RRT iterations before a proof is tried
-  geometry::FreeGridOptions proof_grid;  //!< cells of the proof's grid
-  //! Cells a proof may search: a proof succeeds when one end's component is
-  //! small (a pocket), so large searches only cost time.
-  std::size_t proof_cells = 20'000;
   //! §V-B: a stored path whose ends moved apart is repaired (valid part kept,
   //! gap re-planned) before a fresh plan is tried.
   bool repair = true;
@@ -101,7 +87,7 @@ struct ReuseOptions {
   };
   //! Every technique, in the order names() lists them: the one list that
   //! api::parse_reuse(), names(), any() and none() go through.
-  static const std::array<Technique, 11>& techniques();
+  static const std::array<Technique, 10>& techniques();
   //! A technique's numeric parameter, set by NAME=N (budget=500, backoff=10).
   struct Parameter {
     const char* technique;

@@ -38,7 +38,6 @@ const LegOutcome* count_slot(const ReuseSlot& slot, bool planned, ReuseCounters&
     if (slot.tree_reused) ++c.trees_reused;
     if (slot.failure_reused) ++c.failures_reused;
     if (slot.proven && !slot.planned.found) ++c.legs_proven;
-    c.proof_ms += slot.proof_ms;
   }
   return outcome;
 }

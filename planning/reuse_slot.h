@@ -39,8 +39,7 @@ struct ReuseSlot {
   int fresh_iterations = -1;  //!< RRT iterations of the fresh plan (−1: none)
   bool tree_reused = false;
   bool failure_reused = false;
-  bool proven = false;  //!< the fresh plan failed by a proof
-  double proof_ms = 0.0;
+  bool proven = false;  //!< the fresh plan was refused by the gate (a proof)
   std::optional<RrtTree> grown;               //!< the fresh plan's tree (tree reuse)
   std::vector<geometry::Vec2> failed_points;  //!< a failed fresh plan's nodes and goal
 };

@@ -27,8 +27,8 @@ TEST(ReuseList, ParsesTechniqueLists) {
   EXPECT_EQ(o.names(), "paths,trees");
   EXPECT_EQ(ReuseOptions::none().names(), "none");
   EXPECT_THROW(api::parse_reuse("paths,bogus"), InputError);
-  // "all" is every default technique (budget, backoff and proofs are
-  // opt-in); -name turns one off, left to right.
+  // "all" is every default technique (budget and backoff are opt-in);
+  // -name turns one off, left to right.
   EXPECT_EQ(api::parse_reuse("all").names(),
             "samples,steering,paths,trees,failures,shortcuts,metrics,speculate");
   EXPECT_EQ(api::parse_reuse("all,-trees").names(),

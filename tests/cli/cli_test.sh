@@ -125,8 +125,8 @@ grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour proposed printed no tour";
 check "tour reuse trees" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse trees
 check "plan reuse shortcuts" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse shortcuts
 expect_err "plan rejects shortcuts" "shortcuts would do nothing here"
-check "tour proposed proofs" 0 "$bin" tour "$bed" --sequence door,tv,bed --planner proposed --reuse samples,steering,paths,shortcuts,proofs
-grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour with proofs printed no tour"; fails=$((fails + 1)); }
+check "tour reuse proofs (removed)" 2 "$bin" tour "$bed" --sequence door,tv --planner proposed --reuse samples,proofs
+expect_err "proofs is no technique" "--reuse: unknown technique 'proofs'"
 check "tour proposed budget" 0 "$bin" tour "$bed" --sequence door,tv,bed --planner proposed --reuse samples,steering,paths,shortcuts,budget
 grep -q '"sequence"' "$tmp/out" || { echo "FAIL: tour with a budget printed no tour"; fails=$((fails + 1)); }
 check "plan reuse budget" 2 "$bin" plan "$bed" --from 0.9,1.2,0 --to 2.0,1.2,0 --planner proposed --reuse samples,budget
