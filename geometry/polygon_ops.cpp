@@ -370,4 +370,20 @@ std::vector<Vec2> convex_hull_doubles(std::vector<Vec2> pts) {
   return h;
 }
 
+double polygon_distance(const Polygon& a, const Polygon& b) {
+  if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
+  if (point_in_polygon(a.front(), b) || point_in_polygon(b.front(), a)) return 0.0;
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2 a0 = a[i], a1 = a[(i + 1) % a.size()];
+    for (std::size_t j = 0; j < b.size(); ++j) {
+      const Vec2 b0 = b[j], b1 = b[(j + 1) % b.size()];
+      if (segments_cross(a0, a1, b0, b1)) return 0.0;
+      best =
+          std::min({best, point_segment_distance(a0, b0, b1), point_segment_distance(b0, a0, a1)});
+    }
+  }
+  return best;
+}
+
 }  // namespace hrs::geometry

@@ -26,6 +26,11 @@ bool is_counterclockwise(const Polygon& polygon);
 bool polygon_inside(const Polygon& inner, const Polygon& outer);
 //! True if the open interiors of two simple polygons intersect.
 bool interiors_overlap(const Polygon& a, const Polygon& b);
+//! Euclidean distance between two simple polygons as closed regions: 0 when
+//! their boundaries cross or one contains the other, else the smallest
+//! vertex-to-edge distance either way (where the distance of two disjoint
+//! polygons is attained). Floating point, for clearances and "near" tests.
+double polygon_distance(const Polygon& a, const Polygon& b);
 
 //! Contact tolerance of furniture, m: a footprint may stick out of the room,
 //! or into another footprint or the door's clear zone, by at most this much

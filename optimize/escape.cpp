@@ -13,25 +13,6 @@
 
 namespace hrs::optimize {
 
-namespace {
-
-//! Smallest vertex-to-edge distance between two polygons, either way (0
-//! when an edge of one crosses the other is not detected; an upper bound
-//! of the gap, enough to tell "near").
-double footprint_gap(const geometry::Polygon& a, const geometry::Polygon& b) {
-  double d = std::numeric_limits<double>::infinity();
-  for (int pass = 0; pass < 2; ++pass) {
-    const geometry::Polygon& p = pass == 0 ? a : b;
-    const geometry::Polygon& q = pass == 0 ? b : a;
-    for (const geometry::Vec2& v : p)
-      for (std::size_t e = 0; e < q.size(); ++e)
-        d = std::min(d, geometry::point_segment_distance(v, q[e], q[(e + 1) % q.size()]));
-  }
-  return d;
-}
-
-}  // namespace
-
 int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
                            const PlaceFn& place) {
   static constexpr int kSeparateDraws = 500;
@@ -125,7 +106,7 @@ bool EscapePolicy::covers_a_stop(const Pose2& to, int moved) {
     // A goal pose's chair lies within gap + its diagonal of the stop.
     const double reach = work_.objects[s].approach_or_default().gap + 0.01 +
                          std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
-    if (s != moved && footprint_gap(geometry::world_footprint(work_.objects[s]), fp) > reach)
+    if (s != moved && geometry::polygon_distance(geometry::world_footprint(work_.objects[s]), fp) > reach)
       continue;
     if (!moved_in_cspace) {
       cspace_.move_object(moved, to);
@@ -249,7 +230,7 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
     if (!movable_[i]) continue;
     bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
     const geometry::Polygon fp = geometry::world_footprint(work_.objects[i]);
-    for (const geometry::Polygon& t : targets) near = near || footprint_gap(fp, t) <= kFocusReach;
+    for (const geometry::Polygon& t : targets) near = near || geometry::polygon_distance(fp, t) <= kFocusReach;
     if (near) out.push_back(i);
   }
   return out;

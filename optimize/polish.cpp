@@ -95,7 +95,6 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       poses = std::move(q);
       terms = t;
       report = std::move(met);
-      ++out.kept;
       hooks.kept();
       if (corridor) corridor.emplace(scene.wheelchair, hooks.tours());
       return true;
@@ -145,6 +144,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         if (score(best) <= score(report)) continue;
         ++out.tried;
         if (try_moves(moves, best)) {
+          ++out.kept;
           kept = true;
           break;
         }
@@ -175,6 +175,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         if (out.tried >= max_tries || (stop && stop->load())) break;
         ++out.tried;
         if (try_moves({{object, better[k].to}}, better[k].report)) {
+          ++out.kept;
           ++out.slid;
           break;
         }
@@ -200,17 +201,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     PreferenceReport next = check_preferences(scene, model, p);
     if (score(next) < score(report)) continue;
     ++out.tried;
-    hooks.place(object, p[i]);
-    const CostTerms t = hooks.plan(p);
-    if (t.tours_found >= terms.tours_found) {
-      poses = std::move(p);
-      terms = t;
-      report = std::move(next);
-      ++out.squared;
-      hooks.kept();
-    } else {
-      hooks.place(object, poses[i]);
-    }
+    if (try_moves({{object, p[i]}}, next)) ++out.squared;
   }
   return out;
 }

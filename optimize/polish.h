@@ -3,10 +3,14 @@
 // The final polish of a design (docs/optimize.md "Preferences"): after the
 // annealing, each movable object with an unmet preference is tried at the
 // poses that would meet it (optimize/preferences.h, preferred_poses), one
-// at a time; a pose is kept when it is valid, every tour found before is
-// still found (the tours are planned again) and more preferences are met.
+// at a time, alone or with one relation partner; when none is kept, at up
+// to three places along the walls (wall_slides) that score higher, those
+// clear of the kept tours' corridor first. A move is kept when the layout
+// is valid, every tour found before is still found (the tours are planned
+// again) and the preference score rises: preferences met, less one for
+// each angle preference more than 20° off.
 // Last, each movable object whose heading no preference fixes is turned
-// square to its nearest wall, on the same conditions (no preference lost).
+// square to its nearest wall, on the same conditions (score not lowered).
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order), so the result is a function of the layout and the planner's
 // seeds, whatever the thread count.

@@ -210,8 +210,11 @@ std::vector<Pose2> wall_slides(const geometry::Scene& scene, const CostModel& mo
         o.wall->angle ? model.wall_normal_angle(e) + *o.wall->angle : now.theta;
     const auto line = wall_line(scene, o, e, theta, *o.wall->distance);
     if (!line) continue;
+    // Every step from the line's start, and its end unless a step landed
+    // on it (within a micrometre).
     const int n = static_cast<int>(std::floor((line->hi - line->lo) / step));
-    for (int j = 0; j <= n + 1; ++j) {
+    const bool end_apart = line->hi - (line->lo + n * step) > 1e-6;
+    for (int j = 0; j <= n + (end_apart ? 1 : 0); ++j) {
       const Pose2 at = line->at(j <= n ? line->lo + j * step : line->hi);
       ranked.emplace_back(geometry::norm(at.position() - now.position()), at);
     }

@@ -6,43 +6,16 @@
 #include <limits>
 
 #include "geometry/error.h"
+#include "geometry/polygon_ops.h"
 
 namespace hrs::planning {
 
-using geometry::point_segment_distance;
 using geometry::Polygon;
 using geometry::Pose2;
-using geometry::segments_cross;
 using geometry::Side;
 using geometry::Vec2;
 
 namespace {
-
-//! Distance between two simple polygons (0 when they overlap).
-double polygon_distance(const Polygon& a, const Polygon& b) {
-  if (geometry::point_in_polygon(a.front(), b) || geometry::point_in_polygon(b.front(), a))
-    return 0.0;
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const Vec2 a0 = a[i], a1 = a[(i + 1) % a.size()];
-    for (std::size_t j = 0; j < b.size(); ++j) {
-      const Vec2 b0 = b[j], b1 = b[(j + 1) % b.size()];
-      if (segments_cross(a0, a1, b0, b1)) return 0.0;
-      best =
-          std::min({best, point_segment_distance(a0, b0, b1), point_segment_distance(b0, a0, a1)});
-    }
-  }
-  return best;
-}
-
-//! The chair's rectangle at `pose` (object-local coordinates).
-Polygon chair_polygon(const Pose2& pose, double length, double width) {
-  const double hl = 0.5 * length, hw = 0.5 * width;
-  const Vec2 local[4] = {{hl, hw}, {-hl, hw}, {-hl, -hw}, {hl, -hw}};
-  Polygon out;
-  for (Vec2 v : local) out.push_back(geometry::to_world(pose, v));
-  return out;
-}
 
 //! Chair pose at distance d along `normal` from `q`, facing the origin.
 Pose2 facing_origin(Vec2 q, Vec2 normal, double d) {
@@ -66,7 +39,8 @@ double clear_offset(const geometry::Scene& scene, const Polygon& fp, double gap,
                     Vec2 normal, double tolerance) {
   const double length = scene.wheelchair.length, width = scene.wheelchair.width;
   auto clear = [&](double d) {
-    return polygon_distance(chair_polygon(facing_origin(q, normal, d), length, width), fp) >= gap;
+    const Polygon chair = geometry::chair_footprint(scene.wheelchair, facing_origin(q, normal, d));
+    return geometry::polygon_distance(chair, fp) >= gap;
   };
   const double limit = length + width + gap + 1.0;
   const double kScan = std::max(0.02, limit / kMaxScanSteps);

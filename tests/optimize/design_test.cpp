@@ -38,26 +38,6 @@ std::string read(const std::filesystem::path& p) {
   return ss.str();
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = geometry::dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(geometry::dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return geometry::norm(p - (a + t * ab));
-}
-
-// Distance between two disjoint polygons (vertex-to-edge both ways).
-double polygon_distance(const Polygon& a, const Polygon& b) {
-  double d = 1e300;
-  for (int pass = 0; pass < 2; ++pass) {
-    const Polygon& p = pass ? b : a;
-    const Polygon& q = pass ? a : b;
-    for (const auto& v : p)
-      for (std::size_t i = 0; i < q.size(); ++i)
-        d = std::min(d, segment_distance(v, q[i], q[(i + 1) % q.size()]));
-  }
-  return d;
-}
-
 rs::Path path_of(const json& leg, double radius) {
   rs::Path path;
   path.radius = radius;
@@ -148,7 +128,7 @@ int check_design_dir(const Scene& input, const std::filesystem::path& dir) {
       const Polygon chair{geometry::to_world(to, {-l, -w}), geometry::to_world(to, {l, -w}),
                           geometry::to_world(to, {l, w}), geometry::to_world(to, {-l, w})};
       const double gap = out.objects[obj].approach_or_default().gap;
-      EXPECT_NEAR(polygon_distance(chair, geometry::world_footprint(out.objects[obj])), gap, 0.02)
+      EXPECT_NEAR(geometry::polygon_distance(chair, geometry::world_footprint(out.objects[obj])), gap, 0.02)
           << "leg " << i << " does not stop at " << seq[i + 1];
       length += path.length();
       at = to;
