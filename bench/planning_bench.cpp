@@ -7,6 +7,12 @@
 // continuously); OMPL planners stop at kOmplTimeLimit seconds per leg, ours at
 // its iteration cap. Each benchmark runs the whole set once and reports
 // solved legs and mean/median time per leg as counters.
+//
+// The nearest-node index (planning::PoseNearest) is timed against its
+// previous version (bench/nearest_previous.h) on RRT-shaped trees: each step
+// draws a uniform target pose in a 4.5 m x 4 m room, asks for the k = 10
+// nearest nodes, and grows a chain of 1-5 nodes 0.25 m apart from the
+// nearest one, turning towards the target at most 0.25/0.7 rad per step.
 
 #include <benchmark/benchmark.h>
 
@@ -28,6 +34,8 @@
 #include "geometry/cspace.h"
 #include "geometry/scene.h"
 #include "planning/goals.h"
+#include "nearest_previous.h"
+#include "planning/nearest.h"
 #include "planning/rrt.h"
 
 namespace {
@@ -190,6 +198,94 @@ BENCHMARK_TEMPLATE(BM_Ompl, og::RRTConnect)
     ->Arg(1)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond);
+
+//! One step of the RRT-shaped workload: the query, then the poses added.
+struct GrowthStep {
+  Pose2 query;
+  std::vector<Pose2> added;
+};
+
+//! The workload of a tree grown to `nodes` poses (fixed seed), built with
+//! the current index (both versions give the same answers, which the unit
+//! tests check against a linear scan).
+const std::vector<GrowthStep>& growth(int nodes) {
+  static std::vector<std::pair<int, std::vector<GrowthStep>>> made;
+  for (const auto& [n, steps] : made)
+    if (n == nodes) return steps;
+  std::mt19937_64 rng(17);
+  hrs::planning::PoseNearest index(0.7);
+  std::vector<Pose2> poses{{0.6, 0.6, 0.0}};
+  index.insert(poses[0], 0);
+  std::vector<GrowthStep> steps;
+  std::vector<std::int32_t> knn;
+  while (static_cast<int>(poses.size()) < nodes) {
+    GrowthStep step;
+    step.query = {4.5 * unit(rng), 4.0 * unit(rng), 3.141592653589793 * (2 * unit(rng) - 1)};
+    index.nearest(step.query, 10, knn);
+    Pose2 p = poses[knn.front()];
+    const int count = 1 + static_cast<int>(rng() % 5);
+    for (int i = 0; i < count && static_cast<int>(poses.size()) < nodes; ++i) {
+      const double want = std::atan2(step.query.y - p.y, step.query.x - p.x);
+      const double turn = std::clamp(hrs::geometry::wrap_angle(want - p.theta), -0.357, 0.357);
+      p.theta = hrs::geometry::wrap_angle(p.theta + turn);
+      p.x = std::clamp(p.x + 0.25 * std::cos(p.theta), 0.0, 4.5);
+      p.y = std::clamp(p.y + 0.25 * std::sin(p.theta), 0.0, 4.0);
+      step.added.push_back(p);
+      index.insert(p, static_cast<std::int32_t>(poses.size()));
+      poses.push_back(p);
+    }
+    steps.push_back(std::move(step));
+  }
+  made.emplace_back(nodes, std::move(steps));
+  return made.back().second;
+}
+
+//! Grows the whole tree (one k = 10 query and the chain's inserts per step).
+template <class Index>
+void BM_NearestGrowth(benchmark::State& state) {
+  const auto& steps = growth(static_cast<int>(state.range(0)));
+  std::vector<std::int32_t> knn;
+  std::size_t queries = 0;
+  for (auto _ : state) {
+    Index index(0.7);
+    index.insert({0.6, 0.6, 0.0}, 0);
+    std::int32_t next = 1;
+    for (const GrowthStep& step : steps) {
+      index.nearest(step.query, 10, knn);
+      benchmark::DoNotOptimize(knn.data());
+      for (const Pose2& p : step.added) index.insert(p, next++);
+    }
+    queries += steps.size();
+  }
+  state.counters["ns_per_query_and_inserts"] = benchmark::Counter(
+      static_cast<double>(queries), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+//! k = 10 queries (uniform poses in the room) against the grown tree.
+template <class Index>
+void BM_NearestQuery(benchmark::State& state) {
+  const auto& steps = growth(static_cast<int>(state.range(0)));
+  Index index(0.7);
+  index.insert({0.6, 0.6, 0.0}, 0);
+  std::int32_t next = 1;
+  for (const GrowthStep& step : steps)
+    for (const Pose2& p : step.added) index.insert(p, next++);
+  std::vector<std::int32_t> knn;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    index.nearest(steps[i++ % steps.size()].query, 10, knn);
+    benchmark::DoNotOptimize(knn.data());
+  }
+}
+
+BENCHMARK_TEMPLATE(BM_NearestGrowth, hrs::bench::PreviousPoseNearest)
+    ->ArgName("nodes")->Arg(1000)->Arg(5000)->Arg(20000)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_NearestGrowth, hrs::planning::PoseNearest)
+    ->ArgName("nodes")->Arg(1000)->Arg(5000)->Arg(20000)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_NearestQuery, hrs::bench::PreviousPoseNearest)
+    ->ArgName("nodes")->Arg(1000)->Arg(5000)->Arg(20000);
+BENCHMARK_TEMPLATE(BM_NearestQuery, hrs::planning::PoseNearest)
+    ->ArgName("nodes")->Arg(1000)->Arg(5000)->Arg(20000);
 
 }  // namespace
 

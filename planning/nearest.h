@@ -4,10 +4,15 @@
 // nodes by a weighted Euclidean distance and then picks the one with the
 // shortest RS path among them. The distance is
 //   d(a, b) = |(xa, ya) − (xb, yb)| + w · |wrap(θa − θb)|
-// with w in metres per radian. Nodes are kept in an incremental kd-tree over
-// (x, y, θ) whose θ axis is a circle: the bound used for pruning measures the
+// with w in metres per radian. Nodes are kept in an incremental bucket
+// kd-tree over (x, y, θ): leaves hold up to kBucket poses, contiguously, and
+// a leaf that overflows is split at the median of its widest axis (θ scaled
+// by w). The θ axis is a circle: the bound used for pruning measures the
 // angular gap to a cell the short way round, so poses near ±π are found.
-// While the structure is tiny a linear scan answers instead (it is faster).
+// A leaf's poses are ranked after two cheap lower bounds (the heading term,
+// then |dx|), so the square root runs only for poses that may enter the
+// answer. The answer is exact: the k smallest distances, ties by insertion
+// order (tests/planning/nearest_test.cpp checks it against a linear scan).
 
 #include <cstddef>
 #include <cstdint>
@@ -33,47 +38,56 @@ class PoseNearest {
   //! Adds a pose with the caller's id (ids need not be dense).
   void insert(const geometry::Pose2& pose, std::int32_t id);
   //! Removes the pose with this id from later answers (a tombstone: the
-  //! node still guides the search, and subtrees with no live pose left are
-  //! skipped, so a tree whose nodes are mostly removed stays fast).
-  //! O(depth). Unknown or already removed ids are ignored.
+  //! pose stays in its leaf, and cells with no live pose left are skipped,
+  //! so a tree whose poses are mostly removed stays fast). O(depth). Unknown or already removed ids are ignored.
   void remove(std::int32_t id);
   //! Ids of the (at most) k nearest poses to `query`, nearest first; ties are
   //! broken by insertion order, so the answer is deterministic.
   void nearest(const geometry::Pose2& query, std::size_t k, std::vector<std::int32_t>& out) const;
 
   //! Poses inserted, removed ones included.
-  std::size_t size() const { return nodes_.size(); }
-  void clear() {
-    nodes_.clear();
-    index_of_id_.clear();
-  }
+  std::size_t size() const { return id_.size(); }
+  void clear();
   double heading_weight() const { return weight_; }
 
-  //! Below this many poses a linear scan answers queries.
-  static constexpr std::size_t kLinearScanBelow = 32;
+  //! Poses per leaf before it is split (a leaf of equal poses may hold more).
+  static constexpr std::size_t kBucket = 16;
 
  private:
-  struct Node {
-    double p[3];  //!< x, y, theta wrapped to (−pi, pi]
-    std::int32_t id;
+  struct Point {
+    double x, y, t;       //!< t: heading wrapped to (−pi, pi]
+    std::uint32_t order;  //!< insertion index: breaks ties, indexes the per-pose arrays
+  };
+  //! A kd-tree cell: internal (axis >= 0, two children) or a leaf (points).
+  struct Cell {
+    int axis = -1;
+    double split = 0.0;  //!< internal: coordinate < split goes to child[0]
     std::int32_t child[2] = {-1, -1};
     std::int32_t parent = -1;
-    std::int32_t alive = 1;  //!< poses not removed in this subtree (itself included)
-    bool removed = false;
+    std::int32_t alive = 0;         //!< poses not removed below this cell
+    std::size_t split_at = kBucket;  //!< leaf: size that triggers the next split attempt
+    std::vector<Point> points;       //!< leaf only
   };
   struct Candidate {
     double d;
     std::uint32_t order;  //!< insertion index, breaks ties
     bool operator<(const Candidate& o) const { return d < o.d || (d == o.d && order < o.order); }
   };
-  void search(std::int32_t node, int depth, const double q[3], double lo[3], double hi[3],
-              std::size_t k, std::vector<Candidate>& heap) const;
+  void search(std::int32_t cell, const double q[3], double lo[3], double hi[3], std::size_t k,
+              std::vector<Candidate>& heap) const;
+  void scan_leaf(const Cell& leaf, const double q[3], std::size_t k,
+                 std::vector<Candidate>& heap) const;
+  //! Splits an overflowing leaf in two (no-op when its poses are all equal).
+  void split_leaf(std::int32_t cell);
   double point_distance(const double a[3], const double b[3]) const;
   double box_bound(const double q[3], const double lo[3], const double hi[3]) const;
 
   double weight_;
-  std::vector<Node> nodes_;                //!< nodes_[0] is the kd-tree root
-  std::vector<std::int32_t> index_of_id_;  //!< node index per non-negative id, or -1
+  std::vector<Cell> cells_;                //!< cells_[0] is the root
+  std::vector<std::int32_t> id_;           //!< caller's id per insertion index
+  std::vector<std::int32_t> leaf_of_;      //!< leaf cell per insertion index
+  std::vector<std::uint8_t> removed_;      //!< per insertion index
+  std::vector<std::int32_t> index_of_id_;  //!< insertion index per non-negative id, or -1
 };
 
 //! The poses nearest to one fixed query (the RRT's goal), kept in order as

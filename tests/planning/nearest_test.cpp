@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <iterator>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -132,6 +134,84 @@ TEST(QueryOrder, MatchesPoseNearestForItsQueryUnderInsertsAndRemovals) {
       }
     }
   }
+}
+
+// Leaves split at the median of their widest axis: poses that share
+// coordinates (a coarse lattice, so medians often equal a minimum) and a
+// pile of identical poses (a leaf that cannot split) must still give the
+// linear scan's answer, ties broken by insertion order, under removals.
+TEST(PoseNearest, LatticeAndIdenticalPosesMatchLinearScan) {
+  std::mt19937_64 rng(23);
+  PoseNearest tree(0.7);
+  std::vector<Pose2> poses;
+  std::vector<bool> live;
+  const Pose2 pile{1.5, 2.0, std::numbers::pi};
+  for (int i = 0; i < 3000; ++i) {
+    const Pose2 p = i % 3 == 0 ? pile
+                               : Pose2{0.5 * static_cast<double>(rng() % 9),
+                                       0.5 * static_cast<double>(rng() % 7),
+                                       std::numbers::pi / 2 * static_cast<double>(rng() % 4) -
+                                           std::numbers::pi / 2};
+    poses.push_back(p);
+    live.push_back(true);
+    tree.insert(p, i);
+  }
+  // The pile's thousand equal poses end in one leaf that no split can cut
+  // (no coordinate separates them); the answers must not depend on it.
+  std::vector<std::int32_t> got;
+  for (int q = 0; q < 3000; ++q) {
+    if (q % 3 == 0) {
+      const auto id = static_cast<std::int32_t>(rng() % poses.size());
+      tree.remove(id);
+      live[static_cast<std::size_t>(id)] = false;
+    }
+    const Pose2 query = q % 4 == 0 ? pile
+                                   : Pose2{0.5 * static_cast<double>(rng() % 10) - 0.25,
+                                           0.5 * static_cast<double>(rng() % 8),
+                                           std::numbers::pi * (2 * uniform01(rng) - 1)};
+    const std::size_t k = 1 + q % 40;
+    std::vector<std::pair<double, int>> all;
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      if (live[i]) all.emplace_back(tree.distance(query, poses[i]), static_cast<int>(i));
+    std::sort(all.begin(), all.end());
+    tree.nearest(query, k, got);
+    ASSERT_EQ(got.size(), std::min(k, all.size())) << q;
+    for (std::size_t j = 0; j < got.size(); ++j) ASSERT_EQ(got[j], all[j].second) << q << " " << j;
+  }
+}
+
+// The index ranks by a heading gap computed without wrap_angle (|a − b|, or
+// 2pi minus it past pi). For headings already in (−pi, pi] it must be the
+// same double as distance()'s |wrap_angle(a − b)|: random headings, and
+// headings at and next to ±pi and 0, where the two branches meet.
+TEST(PoseNearest, RankingDistanceEqualsDistanceBitForBit) {
+  std::mt19937_64 rng(29);
+  const double pi = std::numbers::pi;
+  const double edges[] = {pi,
+                          std::nextafter(pi, 0.0),
+                          -std::nextafter(pi, 0.0),
+                          0.0,
+                          -0.0,
+                          std::nextafter(0.0, 1.0),
+                          pi / 2,
+                          -pi / 2,
+                          std::nextafter(pi / 2, 0.0),
+                          -std::nextafter(pi / 2, 0.0)};
+  PoseNearest n(0.7);
+  int compared = 0;
+  for (int i = 0; i < 1000000; ++i) {
+    const auto heading = [&] {
+      return rng() % 4 == 0 ? edges[rng() % std::size(edges)] : pi * (2 * uniform01(rng) - 1);
+    };
+    const Pose2 a{4 * uniform01(rng), 4 * uniform01(rng), heading()};
+    const Pose2 b{4 * uniform01(rng), 4 * uniform01(rng), heading()};
+    if (a.theta <= -pi || b.theta <= -pi) continue;  // outside (−pi, pi]
+    const double want = n.distance(a, b);
+    const double got = n.ranking_distance(a, b);
+    ASSERT_EQ(std::memcmp(&want, &got, sizeof want), 0) << i << " " << a.theta << " " << b.theta;
+    ++compared;
+  }
+  EXPECT_GT(compared, 990000);
 }
 
 TEST(PoseNearest, DistanceWrapsHeading) {
