@@ -79,7 +79,7 @@ std::vector<std::string> split_sequence(const std::string& text) {
 void check_sequence(const geometry::Scene& scene, const std::vector<std::string>& sequence) {
   if (sequence.empty()) throw InputError("--sequence: no object ids");
   for (const std::string& id : sequence) {
-    if (id != planning::kDoorId && scene.find_object(id) < 0)
+    if (id != geometry::kStartNodeId && scene.find_object(id) < 0)
       throw InputError("--sequence: unknown object id '" + id + "'");
   }
 }

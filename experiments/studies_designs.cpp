@@ -113,7 +113,7 @@ RunOutput ao_run(const RunSpec& spec, RunContext& context) {
   } else {
     std::vector<std::pair<double, std::string>> by_alpha;
     for (const auto& [id, a] : alpha)
-      if (id != planning::kDoorId) by_alpha.emplace_back(-a, id);
+      if (id != geometry::kStartNodeId) by_alpha.emplace_back(-a, id);
     std::sort(by_alpha.begin(), by_alpha.end());
     for (std::size_t i = 0; i < std::min<std::size_t>(2, by_alpha.size()); ++i)
       pair.push_back(by_alpha[i].second);

@@ -91,7 +91,7 @@ RunOutput method_run(const RunSpec& spec, RunContext& context) {
   Table goals;
   add_goal_rows(goals, planner, first);
   add_goal_rows(goals, planner, second);
-  const planning::Tour tour = planner.plan({std::string(planning::kDoorId), first, second});
+  const planning::Tour tour = planner.plan({std::string(geometry::kStartNodeId), first, second});
   Table leg;
   if (tour.found && tour.legs.size() == 2) {
     for (const auto& w : tour.legs[1].waypoints) {

@@ -21,7 +21,6 @@ namespace hrs::geometry {
 namespace {
 
 using scene_io::door_edge;
-using scene_io::kStartNode;
 
 //! Distance from p to segment [a, b] and the arc-length parameter of its projection.
 std::pair<double, double> segment_distance(Vec2 p, Vec2 a, Vec2 b) {
@@ -104,7 +103,7 @@ Pose2 door_start_pose(const Scene& scene) {
 }
 
 int longest_walk(const Activity& activity, int cap) {
-  std::set<std::string> at{std::string(kStartNode)};
+  std::set<std::string> at{std::string(kStartNodeId)};
   for (int step = 0; step < cap; ++step) {
     std::set<std::string> next;
     for (const std::string& from : at) {

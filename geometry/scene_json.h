@@ -20,7 +20,6 @@ namespace hrs::geometry::scene_io {
 using Json = nlohmann::json;
 
 inline constexpr std::string_view kFormat = "hrspace-scene/1";
-inline constexpr std::string_view kStartNode = kStartNodeId;
 inline constexpr std::string_view kComment = "comment";
 inline constexpr std::array<std::string_view, 4> kSideNames{"front", "back", "left", "right"};
 //! Door centre on the boundary, door width on its edge: the contact

@@ -57,7 +57,6 @@ using scene_io::kBoundaryTolerance;
 using scene_io::kComment;
 using scene_io::kFormat;
 using scene_io::kSideNames;
-using scene_io::kStartNode;
 using scene_io::literal;
 using scene_io::num;
 using scene_io::one_line;
@@ -220,7 +219,7 @@ class SceneReader : public scene_io::FieldReader {
     if (o.id.empty()) fail(child(ptr, "id"), "must not be empty");
     if (const std::string bad = unprintable(o.id); !bad.empty())
       fail(child(ptr, "id"), "holds " + bad + " (names and ids are printable text)");
-    if (o.id == kStartNode) fail(child(ptr, "id"), "\"door\" is reserved for the start node");
+    if (o.id == kStartNodeId) fail(child(ptr, "id"), "\"door\" is reserved for the start node");
     if (o.id == kComment) {
       fail(child(ptr, "id"), "\"comment\" is reserved (comment fields are ignored)");
     }
@@ -378,7 +377,7 @@ class SceneReader : public scene_io::FieldReader {
     for (const auto& [from, row] : t.items()) {
       if (from == kComment) continue;
       const std::string rp = child(tp, from);
-      if (from != kStartNode && scene.find_object(from) < 0) {
+      if (from != kStartNodeId && scene.find_object(from) < 0) {
         fail(rp, "unknown object id " + literal(from) + " (rows are \"door\" or object ids)");
       }
       expect_object(row, rp);
@@ -387,7 +386,7 @@ class SceneReader : public scene_io::FieldReader {
       for (const auto& [to, p] : row.items()) {
         if (to == kComment) continue;
         const std::string pp = child(rp, to);
-        if (to == kStartNode) fail(pp, "\"door\" is the start node, not a destination");
+        if (to == kStartNodeId) fail(pp, "\"door\" is the start node, not a destination");
         if (scene.find_object(to) < 0) fail(pp, "unknown object id " + literal(to));
         const double v = number(p, pp);
         if (!(v >= 0.0 && v <= 1.0)) fail(pp, "probability must be in [0, 1], got " + num(v));
@@ -398,8 +397,8 @@ class SceneReader : public scene_io::FieldReader {
         fail(rp, "probabilities must sum to 1 (+-1e-6), got " + num(sum));
       }
     }
-    if (!a.transitions.contains(std::string(kStartNode))) {
-      fail(child(tp, kStartNode), "missing required row of the start node");
+    if (!a.transitions.contains(std::string(kStartNodeId))) {
+      fail(child(tp, kStartNodeId), "missing required row of the start node");
     }
     if (const Json* s = optional(j, "sequences")) {
       a.sequences = integer_in(*s, child(ptr, "sequences"), 1, limits::kSequences);

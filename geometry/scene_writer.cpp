@@ -18,7 +18,6 @@ namespace {
 using OrderedJson = nlohmann::ordered_json;
 using scene_io::kFormat;
 using scene_io::kSideNames;
-using scene_io::kStartNode;
 
 // ---- values and the layout of the text ------------------------------------
 
@@ -175,7 +174,7 @@ void add_transition_row(const Scene& scene, const std::string& from, OrderedJson
 //! The start row first, then the objects' rows in scene order, then any others.
 OrderedJson transitions_json(const Scene& scene) {
   OrderedJson transitions = OrderedJson::object();
-  add_transition_row(scene, std::string(kStartNode), transitions);
+  add_transition_row(scene, std::string(kStartNodeId), transitions);
   for (const Object& o : scene.objects) add_transition_row(scene, o.id, transitions);
   for (const auto& [from, row] : scene.activity.transitions) {
     if (!transitions.contains(from)) add_transition_row(scene, from, transitions);

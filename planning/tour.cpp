@@ -53,7 +53,7 @@ TourPlanner::TourPlanner(const geometry::Scene& scene, const CSpace& cspace, Tou
 }
 
 std::vector<GoalPose> TourPlanner::goals_for(std::string_view id) const {
-  if (id == kDoorId) {
+  if (id == geometry::kStartNodeId) {
     const Pose2 start = geometry::door_start_pose(*scene_);
     if (!cspace_->is_free(start)) return {};
     return {GoalPose{start, geometry::Side::kFront, 0}};
@@ -72,7 +72,7 @@ Tour TourPlanner::plan(const std::vector<std::string>& sequence) {
   for (const std::string& id : sequence) {
     Stop stop;
     stop.id = id;
-    stop.object = id == kDoorId ? -1 : scene_->find_object(id);
+    stop.object = id == geometry::kStartNodeId ? -1 : scene_->find_object(id);
     stop.goals = goals_for(id);
     stop.dead.assign(stop.goals.size(), 0);
     stops.push_back(std::move(stop));

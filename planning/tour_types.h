@@ -21,8 +21,6 @@
 
 namespace hrs::planning {
 
-//! Id of the start node in sequences (the door).
-inline constexpr std::string_view kDoorId = geometry::kStartNodeId;
 //! RRT iterations a baseline leg runs before the gate is asked (TourHooks):
 //! the gate's fill costs about as much as a few hundred iterations, and
 //! most found legs need fewer.

@@ -66,7 +66,7 @@ std::vector<std::string> random_sequence(const Scene& scene, std::mt19937_64& rn
   std::vector<std::string> ids;
   for (const auto& o : scene.objects) ids.push_back(o.id);
   std::shuffle(ids.begin(), ids.end(), rng);
-  std::vector<std::string> seq{std::string(kDoorId)};
+  std::vector<std::string> seq{std::string(geometry::kStartNodeId)};
   for (std::size_t i = 0; i < ids.size() && i < 3; ++i) seq.push_back(ids[i]);
   return seq;
 }
