@@ -4,10 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
-#include <cmath>
-#include <limits>
-#include <memory>
-#include <numbers>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -17,7 +13,6 @@
 #include "geometry/random.h"
 #include "optimize/escape.h"
 #include "optimize/tour_round.h"
-#include "planning/motion_validator.h"
 
 namespace hrs::optimize {
 
@@ -28,16 +23,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
-
-}  // namespace
-
-std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
-  std::uint64_t h = splitmix64(seed);
-  h = splitmix64(h ^ static_cast<std::uint64_t>(iteration));
-  return splitmix64(h ^ (static_cast<std::uint64_t>(tour) << 32));
-}
-
-namespace {
 
 std::vector<bool> movable_of(const geometry::Scene& scene) {
   std::vector<bool> out;
@@ -231,8 +216,7 @@ class DesignRun {
     return proposed_terms_.total();
   }
 
-  //! A proposal rejected before any tour was planned, on the lower bound
-  //! `bound`.
+  //! A proposal rejected before any tour was planned, on the lower bound `bound`.
   double rejected_unplanned(const InteriorCosts& in, double bound) {
     rejected_early_ = true;
     proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage(), 0);
@@ -241,15 +225,10 @@ class DesignRun {
   }
 
   //! The grid's lower bounds of the tours' costs before anything is planned
-  //! (TourRound::certain_floors), or none. The baseline's legs are costly
-  //! enough to pay for a grid fill before any of them while tours are
-  //! missing; once the current layout has all its tours, a proposal seldom
-  //! walls a stop off (a covering move is refused), and the fill would be
-  //! most of its planning, so none is asked. The proposed planner's typical
-  //! layout costs about as much as a fill, so it skips them, except with
-  //! every technique off: then it is the baseline and bounds like it, so
-  //! that both give the same trace. Floors only bound: the decisions are
-  //! the same with or without them.
+  //! (TourRound::certain_floors), or none: asked by the baseline (or the
+  //! proposed planner with every technique off) while the current layout
+  //! misses tours, where a fill costs less than the legs it can spare.
+  //! Floors only bound: the decisions are the same with or without them.
   std::vector<double> pre_planning_floors() {
     const bool baseline_like = !options_.planner.proposed || !options_.planner.reuse.any();
     if (!baseline_like || !options_.planner.refuse) return {};
@@ -261,8 +240,7 @@ class DesignRun {
     return floors;
   }
 
-  //! Moves object `o` to `to` in the working scene, the C-space and the
-  //! round's grid.
+  //! Moves object `o` to `to` in the working scene, the C-space and the grid.
   void place(int o, const Pose2& to) {
     work_.objects[o].pose = to;
     cspace_.move_object(o, to);
@@ -354,7 +332,8 @@ class DesignRun {
   void polish_best(const AnnealResult& r) {
     std::vector<Pose2> poses = r.best;
     for (std::size_t i = 0; i < poses.size(); ++i)
-      if (cspace_.object_pose(static_cast<int>(i)) != poses[i]) place(static_cast<int>(i), poses[i]);
+      if (cspace_.object_pose(static_cast<int>(i)) != poses[i])
+        place(static_cast<int>(i), poses[i]);
     poses_ = poses;
     CostTerms terms = result_.final;
     if (!plan_every_iteration_) {
@@ -382,6 +361,38 @@ class DesignRun {
     result_.valid = layout_violation(result_.layout).empty();
   }
 
+  //! The rescue of the final layout's unfound tours (PlannerConfig::rescue):
+  //! stops still walled off are unblocked once more (EscapePolicy::unblock,
+  //! kept when more tours are found), then the lattice plans the legs the
+  //! RRT misses (TourRound::rescue).
+  void rescue_tours() {
+    auto& r = result_.rescue;
+    r.tours_unfound = result_.final.tours_total - result_.final.tours_found;
+    if (r.tours_unfound == 0) return;
+    const auto t = Clock::now();
+    std::vector<Pose2> p;  // the final layout
+    for (const auto& o : result_.layout.objects) p.push_back(o.pose);
+    round_.place(p);
+    std::vector<Pose2> q = p;
+    DesignResult::Unblock stats;
+    const auto put = [this](int o, const Pose2& to) { place(o, to); };
+    const auto valid = [this](const std::vector<Pose2>& x, int moved) { return move_valid(x, moved); };
+    if (escape_.unblock(q, options_.seed + 1, stop_, valid, put, stats)) {
+      const CostTerms terms = replan(q);
+      if (terms.tours_found > result_.final.tours_found) {
+        r.unblocked = terms.tours_found - result_.final.tours_found;
+        p = q, result_.tours = tours_, result_.final = terms;
+        for (std::size_t i = 0; i < p.size(); ++i) result_.layout.objects[i].pose = p[i];
+      }
+    }
+    r.ran = true, r.tours_found = round_.rescue(p, result_.tours, ++iteration_);
+    if (r.tours_found > 0) {
+      result_.tours = tours_;
+      result_.final = model_.evaluate(p, tours_, &round_.blockage());
+    }
+    r.ms = 1e3 * seconds_since(t);
+  }
+
   //! The best layout, its tours (toured now when the tours were not planned
   //! every iteration) and the run's counts.
   void finish(const AnnealResult& r) {
@@ -406,6 +417,7 @@ class DesignRun {
       result_.tours = tours_;
       result_.final = model_.evaluate(r.best, tours_, &round_.blockage());
     }
+    if (options_.planner.rescue && result_.valid) rescue_tours();
     result_.proposals = r.proposals;
     result_.valid_proposals = r.valid_proposals;
     result_.accepted = r.accepted;
@@ -458,6 +470,12 @@ class DesignRun {
 
 }  // namespace
 
+std::uint64_t tour_seed(std::uint64_t seed, int iteration, int tour) {
+  std::uint64_t h = splitmix64(seed);
+  h = splitmix64(h ^ static_cast<std::uint64_t>(iteration));
+  return splitmix64(h ^ (static_cast<std::uint64_t>(tour) << 32));
+}
+
 DesignResult design(const geometry::Scene& scene, const DesignOptions& options,
                     const std::atomic<bool>* stop,
                     const std::function<void(const DesignStep&)>& progress) {
@@ -477,11 +495,7 @@ ReplayResult replay_planning(const geometry::Scene& scene,
     const auto& poses = layouts[r];
     if (static_cast<int>(poses.size()) != round.cspace().object_count())
       throw std::invalid_argument("replay_planning: layout size differs from the scene's objects");
-    for (int i = 0; i < round.cspace().object_count(); ++i) {
-      if (round.cspace().object_pose(i) == poses[i]) continue;
-      round.work().objects[i].pose = poses[i];
-      round.cspace().move_object(i, poses[i]);
-    }
+    round.place(poses);
     const auto p0 = Clock::now();
     out.tours_invalidated += round.plan(static_cast<int>(r), legs).dropped;
     out.planning_s += seconds_since(p0);

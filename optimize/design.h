@@ -130,6 +130,14 @@ struct DesignResult {
   struct Polish : PolishResult {
     int tours_found_before = 0, met_before = 0;  //!< of the annealer's best layout
   } polish;
+  //! The lattice rescue of the final layout's unfound tours
+  //! (PlannerConfig::rescue): whether it ran, the tours it found, its time.
+  struct Rescue {
+    bool ran = false;
+    int tours_unfound = 0, tours_found = 0;
+    int unblocked = 0;  //!< tours found after unblocking the walled-off stops again
+    double ms = 0.0;
+  } rescue;
   long legs_refused = 0;     //!< legs the free grid proved impossible
   std::uint64_t gate_fills = 0;  //!< reachable sets filled (one per layout that needed one)
   double gate_ms = 0.0;          //!< their total time

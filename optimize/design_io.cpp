@@ -316,6 +316,11 @@ json reuse_json(const DesignResult& result) {
 std::string report_document(const DesignResult& result, const RunInfo& info) {
   json r = run_report_json(result, info);
   if (result.proposed) r["reuse"] = reuse_json(result);
+  if (result.rescue.ran)
+    r["rescue"] = {{"tours_unfound", result.rescue.tours_unfound},
+                   {"unblocked", result.rescue.unblocked},
+                   {"tours_found", result.rescue.tours_found},
+                   {"time_ms", result.rescue.ms}};
   for (const auto& [name, text] : info.report_sections) r[name] = json::parse(text);
   return r.dump(1) + "\n";
 }

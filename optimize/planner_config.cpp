@@ -17,7 +17,7 @@ PlannerConfig literal_config() {
   c.preset = "literal";
   c.proposed = false;
   c.reuse = ReuseOptions::none();
-  c.goalskip = c.refuse = c.escape = c.early = c.prefer = false;
+  c.goalskip = c.refuse = c.escape = c.early = c.prefer = c.rescue = false;
   return c;
 }
 
@@ -59,7 +59,7 @@ const std::array<PlannerConfig::Preset, 4>& PlannerConfig::presets() {
   static const std::array<Preset, 4> list{{
       {"default",
        "the proposed planner with every technique that pays, and the design loop's "
-       "additions (goalskip, refuse, escape, early, prefer)"},
+       "additions (goalskip, refuse, escape, early, prefer, rescue)"},
       {"baseline", "RRT per leg (§III-B) with the design loop's additions"},
       {"paper",
        "the paper's proposed planner (§V): samples, steering, paths, trees; none of our "
@@ -82,8 +82,8 @@ PlannerConfig PlannerConfig::from_preset(std::string_view name, std::string_view
                    known + ")");
 }
 
-const std::array<PlannerConfig::Switch, 5>& PlannerConfig::switches() {
-  static const std::array<Switch, 5> list{{
+const std::array<PlannerConfig::Switch, 6>& PlannerConfig::switches() {
+  static const std::array<Switch, 6> list{{
       {"goalskip", &PlannerConfig::goalskip,
        "an RRT does not steer to the goal again from a node it already tried"},
       {"refuse", &PlannerConfig::refuse,
@@ -98,6 +98,9 @@ const std::array<PlannerConfig::Switch, 5>& PlannerConfig::switches() {
        "preference terms bounded and scaled to their tolerances, preference moves, an "
        "arrangement clear of the found tours, and a "
        "final polish that keeps every found tour"},
+      {"rescue", &PlannerConfig::rescue,
+       "after the design, unfound tours are planned again with the lattice planner "
+       "answering every leg the RRT misses"},
   }};
   return list;
 }

@@ -7,7 +7,8 @@
 // layouts, §V), which of the proposed planner's techniques are on
 // (planning::ReuseOptions), whether the RRT skips goal nodes it already
 // tried, and which of the design loop's own additions are on (refusal gate,
-// escape from walled-in layouts, early rejection; docs/optimize.md).
+// escape from walled-in layouts, early rejection, preferences, the lattice
+// rescue of unfound tours; docs/optimize.md).
 //
 // Four presets name the planners that people compare:
 //   literal   the paper's baseline read literally: RRT per leg, tried goal
@@ -58,6 +59,11 @@ struct PlannerConfig {
   //! that meets its preferences wherever every found tour stays found.
   //! Off: the paper's squared interior terms and moves.
   bool prefer = true;
+  //! Ours: after the design, each tour still unfound is planned once more,
+  //! every leg the RRT misses (and the gate does not refuse) answered by the
+  //! lattice planner (planning/lattice.h): a leg that exists at the
+  //! lattice's resolution is found (docs/planner.md "Lattice rescue").
+  bool rescue = true;
 
   //! A named starting point.
   struct Preset {
@@ -75,7 +81,7 @@ struct PlannerConfig {
     bool PlannerConfig::*on;
     const char* what;
   };
-  static const std::array<Switch, 5>& switches();
+  static const std::array<Switch, 6>& switches();
 
   //! The shortest text that parses back to this configuration: the preset,
   //! then every switch and technique that differs from it.

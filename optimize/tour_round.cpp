@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "planning/lattice.h"
 #include "planning/recheck.h"
 
 namespace hrs::optimize {
@@ -37,7 +38,10 @@ TourRound::TourRound(const geometry::Scene& scene, const DesignOptions& options,
   auto local_goals = std::make_shared<std::vector<std::vector<planning::GoalPose>>>();
   for (const geometry::Object& o : work_.objects)
     local_goals->push_back(planning::local_goal_poses(work_, o, tour.goals, stop));
-  hooks.local_goals = std::move(local_goals);
+  hooks.local_goals = local_goals;
+  local_goals_ = std::move(local_goals);
+  tour_options_ = tour;
+  stop_ = stop;
   for (std::size_t k = 0; k < sequences.size(); ++k) {
     hooks.tour = static_cast<int>(k);
     planners_.push_back(std::make_unique<planning::TourPlanner>(
@@ -167,6 +171,53 @@ std::vector<double> TourRound::certain_floors(const CostModel& model) {
     }
   }
   return floors;
+}
+
+void TourRound::place(const std::vector<Pose2>& poses) {
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    if (cspace_.object_pose(static_cast<int>(i)) == poses[i]) continue;
+    work_.objects[i].pose = poses[i];
+    cspace_.move_object(static_cast<int>(i), poses[i]);
+  }
+  gate_.invalidate();
+}
+
+int TourRound::rescue(const std::vector<Pose2>& poses, const std::vector<planning::Tour>& tours,
+                      int iteration) {
+  place(poses);
+  grades_.assign(work_.objects.size(), -1.0);
+  tours_ = tours;
+  std::vector<int> unfound;
+  for (std::size_t k = 0; k < tours_.size(); ++k)
+    if (!tours_[k].found && unfound.size() < static_cast<std::size_t>(kRescueTours))
+      unfound.push_back(static_cast<int>(k));
+  std::vector<char> now_found(tours_.size(), 0);
+  pool_.run(static_cast<int>(unfound.size()), [&](int u) {
+    const int k = unfound[static_cast<std::size_t>(u)];
+    planning::LatticePlanner lattice(work_, cspace_, work_.wheelchair.turning_radius);
+    int searches = 0;
+    planning::TourHooks hooks;
+    if (options_.planner.refuse) hooks.gate = &gate_;
+    hooks.stop = stop_;
+    hooks.tour = k;
+    hooks.local_goals = local_goals_;
+    hooks.fallback = [&](const Pose2& from, const Pose2& to) -> std::optional<rs::Path> {
+      if (searches++ >= kRescueLegs || (stop_ && stop_->load())) return std::nullopt;
+      planning::LatticeResult r = lattice.plan(from, to);
+      if (!r.found()) return std::nullopt;
+      return std::move(r.path);
+    };
+    planning::TourPlanner planner(work_, cspace_, tour_options_,
+                                  tour_seed(options_.seed, iteration, k), hooks);
+    planning::Tour tour = planner.plan((*sequences_)[k].nodes);
+    if (tour.found && planning::recheck_tour(cspace_, work_.wheelchair.turning_radius, tour,
+                                             nullptr)) {
+      tours_[k] = std::move(tour);
+      now_found[k] = 1;
+    }
+  });
+  for (std::size_t k = 0; k < tours_.size(); ++k) grade(static_cast<int>(k));
+  return static_cast<int>(std::count(now_found.begin(), now_found.end(), 1));
 }
 
 }  // namespace hrs::optimize

@@ -72,6 +72,9 @@ class TourRound {
   //! The stops where this round's unfound tours broke off (the target of
   //! the first leg not joined), index order.
   std::vector<int> failing_stops();
+  //! Moves every object whose pose differs from `poses` (scene order) in the
+  //! working scene and the C-space; the gate follows.
+  void place(const std::vector<Pose2>& poses);
   //! The layout changed outside plan(): the gate follows it.
   void layout_changed() { gate_.invalidate(); }
   //! Goal poses of object `index` in the current layout.
@@ -89,6 +92,16 @@ class TourRound {
   //! that depth with the same grades; other tours: 0. Starts the round
   //! (the next plan() keeps the gate's fill and the grades).
   std::vector<double> certain_floors(const CostModel& model);
+  //! The rescue (PlannerConfig::rescue): the objects are placed at `poses`,
+  //! the round's tours become `tours` (that layout's), and unfound ones are
+  //! planned again by the RRT per leg, every leg it misses and the gate does
+  //! not refuse answered by the lattice planner: the first kRescueTours
+  //! unfound tours (the most likely), at most kRescueLegs lattice searches
+  //! each, so the work is bounded whatever the scene. Returns the tours
+  //! found now that were not.
+  int rescue(const std::vector<Pose2>& poses, const std::vector<planning::Tour>& tours,
+             int iteration);
+  static constexpr int kRescueTours = 5, kRescueLegs = 4;
 
  private:
   //! Fills blockage_[k]: for an unfound tour, the grade of each leg's stop
@@ -106,6 +119,9 @@ class TourRound {
   const std::vector<Sequence>* sequences_;
   std::unique_ptr<planning::ReusePlanner> reuse_;
   std::vector<std::unique_ptr<planning::TourPlanner>> planners_;
+  planning::TourOptions tour_options_;
+  std::shared_ptr<const std::vector<std::vector<planning::GoalPose>>> local_goals_;
+  const std::atomic<bool>* stop_ = nullptr;
   ThreadPool pool_;
   std::vector<planning::Tour> tours_;
   std::vector<int> invalidated_;

@@ -165,6 +165,13 @@ TourPlanner::Fetch TourPlanner::fetch_leg(std::span<const LegRequest> requests, 
       LegResult result =
           planner_.plan(r.from, r.to, leg_seed(seed_, r.key), hooks_.gate ? &check : nullptr);
       if (result.gave_up) ++tour.stats.legs_refused;
+      if (!result.found && !result.gave_up && hooks_.fallback) {
+        if (std::optional<rs::Path> path = hooks_.fallback(r.from, r.to)) {
+          result.found = true;
+          result.path = *std::move(path);
+          ++tour.stats.legs_fallback;
+        }
+      }
       outcome.found = result.found;
       outcome.path = std::move(result.path);
       outcome.stats = result.stats;

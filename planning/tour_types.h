@@ -6,7 +6,9 @@
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -70,6 +72,11 @@ struct TourHooks {
   //! its tour planners. With M = 1000 tours of 100 objects, computing them
   //! per planner took minutes before the first iteration.
   std::shared_ptr<const std::vector<std::vector<GoalPose>>> local_goals;
+  //! Set: a baseline leg that the RRT did not find (and the gate did not
+  //! refuse) is asked here; a path from `from` to `to` is taken as found
+  //! (LegSource::kPlanned). The design's rescue of unfound tours uses the
+  //! lattice planner (planning/lattice.h); unset in every other round.
+  std::function<std::optional<rs::Path>(const Pose2& from, const Pose2& to)> fallback;
 };
 
 struct Leg {
@@ -90,6 +97,7 @@ struct TourStats {
   int legs_repaired = 0;  //!< stored paths repaired by the provider (also in legs_planned)
   int legs_rejected = 0;  //!< stored paths invalid in the current layout
   int legs_refused = 0;   //!< legs the gate proved impossible (also in legs_failed)
+  int legs_fallback = 0;  //!< legs the RRT missed and TourHooks::fallback found
   int backtracks = 0;     //!< returns to an earlier leg
   int depth = 0;          //!< most legs joined at once (= sequence size − 1 when found)
   bool capped = false;    //!< max_leg_plans was reached

@@ -15,7 +15,10 @@
 //   bed) is moved out, and no object that can be approached loses its
 //   last free goal pose;
 // - the clearance weight: a large weight on the path clearance term widens
-//   the tours' corridors (printed for docs/optimize.md).
+//   the tours' corridors (printed for docs/optimize.md);
+// - the rescue: with an RRT cut to 3 iterations (it finds only legs whose
+//   direct RS curve is free), the same design with `rescue` finds exactly
+//   the tours the rescue reports more, loses none, and stays valid.
 
 #include "optimize/design.h"
 
@@ -30,6 +33,7 @@
 #include "geometry/cspace.h"
 #include "geometry/scene.h"
 #include "planning/goals.h"
+#include "rs/reeds_shepp.h"
 
 namespace hrs::optimize {
 namespace {
@@ -347,6 +351,47 @@ TEST(DesignLoop, PolishNeverLosesAFoundTour) {
   // The situation the test is about occurred.
   EXPECT_GT(kept, 0) << "the polish kept nothing in " << runs << " designs";
   EXPECT_GT(squared, 0) << "the polish squared nothing in " << runs << " designs";
+}
+
+TEST(DesignLoop, RescueFindsToursACrippledRrtMissesAndLosesNone) {
+  int rescued = 0, runs = 0;
+  for (const std::string file : {"bedroom.json", "office.json", "narrow_passage.json"}) {
+    const Scene scene = shipped(file);
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      DesignOptions o = options(seed, 20);
+      o.tour.planner.max_iterations = 3;
+      o.planner.rescue = false;
+      const DesignResult without = design(scene, o);
+      o.planner.rescue = true;
+      const DesignResult with = design(scene, o);
+      const std::string what = file + " seed " + std::to_string(seed);
+      ++runs;
+      EXPECT_FALSE(without.rescue.ran) << what;
+      EXPECT_EQ(with.rescue.ran, without.final.tours_found < without.final.tours_total) << what;
+      EXPECT_EQ(with.rescue.tours_unfound,
+                without.final.tours_total - without.final.tours_found) << what;
+      EXPECT_EQ(with.final.tours_found,
+                without.final.tours_found + with.rescue.unblocked + with.rescue.tours_found)
+          << what;
+      EXPECT_TRUE(with.valid) << what;
+      EXPECT_EQ(layout_violation(with.layout), "") << what;
+      int found = 0;
+      for (const auto& t : with.tours) found += t.found ? 1 : 0;
+      EXPECT_EQ(found, with.final.tours_found) << what;
+      // Every found tour's legs join up and are certified free in the final
+      // layout, by the C-space's pose checks every 2 cm.
+      const geometry::CSpace cspace(with.layout);
+      for (const auto& t : with.tours) {
+        if (!t.found) continue;
+        for (const auto& leg : t.legs)
+          for (const geometry::Pose2& q : rs::sample(leg.from, leg.path, 0.02))
+            ASSERT_TRUE(cspace.is_free(q)) << what << ": a rescued tour collides";
+      }
+      rescued += with.rescue.unblocked + with.rescue.tours_found;
+    }
+  }
+  // The situation the test is about occurred.
+  EXPECT_GT(rescued, 0) << "the rescue found nothing in " << runs << " designs";
 }
 
 }  // namespace
