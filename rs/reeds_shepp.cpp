@@ -447,7 +447,7 @@ inline void cccc_lrlr_a(PairQuery& q, Best& best) {
   if (!(rho7 <= 1.0 + kTol)) return;
   if (!family_open<kMode>(std::max(2.0 * std::sqrt(2.0 * std::max(0.0, 1.0 - rho7)), q.hb), best))
     return;
-  // The pre-checks' rotations from cos u = ρ alone (u in [0, π/2]);
+  // The pre-checks' rotations from cos u = ρ alone (u in [0, π/3], as ρ >= 1/2);
   // acos and the exact sines and cosines wait for a surviving candidate.
   const double c1 = std::min(1.0, rho7), s1 = std::sqrt(std::max(0.0, 1.0 - c1 * c1));
   const double c2 = 2.0 * c1 * c1 - 1.0, s2 = 2.0 * s1 * c1;
