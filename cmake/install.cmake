@@ -11,7 +11,7 @@ get_property(_hrspace_modules GLOBAL PROPERTY HRSPACE_MODULES)
 foreach(_module ${_hrspace_modules})
   install(TARGETS hrspace_${_module} EXPORT hrspaceTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-  file(GLOB _headers "${PROJECT_SOURCE_DIR}/${_module}/*.h")
+  file(GLOB _headers CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/${_module}/*.h")
   install(FILES ${_headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/hrspace/${_module})
 endforeach()
 

@@ -51,9 +51,6 @@ class DesignRun {
         sequences_(scene_sequences(scene, stop)),
         model_(scene, sequences_),
         round_(scene, options, sequences_, stop),
-        work_(round_.work()),
-        cspace_(round_.cspace()),
-        tours_(round_.tours()),
         movable_(movable_of(scene)),
         plan_every_iteration_(plans_every_iteration(scene)),
         escape_(scene, round_, sequences_, movable_, options.planner.escape,
@@ -65,28 +62,26 @@ class DesignRun {
     model_.set_bounded_preferences(options.planner.prefer);
     model_.set_uniform_alpha(options.uniform_alpha);
     result_.planned_every_iteration = plan_every_iteration_;
+    valid_ = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
+    move_ = [this](int o, const Pose2& to) { round_.move(o, to); };
   }
 
   DesignResult run() {
     // A stop before the first plan: there is no design yet (design.h).
     throw_if_stopped(stop_, "design setup");
     plan_current();
-    current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
+    current_terms_ = model_.evaluate(poses_, round_.tours(), &round_.blockage());
     result_.initial = current_terms_;
     escape_.refresh_open_stops();
-    const auto valid = [this](const std::vector<Pose2>& p, int moved) {
-      return move_valid(p, moved);
-    };
-    const auto put = [this](int o, const Pose2& to) { place(o, to); };
-    result_.unblock.separated = escape_.separate(poses_, options_.seed, valid, put);
+    result_.unblock.separated = escape_.separate(poses_, options_.seed, valid_, move_);
     if (result_.unblock.separated > 0) escape_.refresh_open_stops();
-    if (escape_.unblock(poses_, options_.seed, stop_, valid, put, result_.unblock) ||
+    if (escape_.unblock(poses_, options_.seed, stop_, valid_, move_, result_.unblock) ||
         result_.unblock.separated > 0) {
       plan_current();  // the annealing starts from the unblocked layout
-      current_terms_ = model_.evaluate(poses_, tours_, &round_.blockage());
+      current_terms_ = model_.evaluate(poses_, round_.tours(), &round_.blockage());
     }
     focus_current_ = escape_.walling_objects();
-    current_tours_ = tours_;
+    current_tours_ = round_.tours();
     const AnnealOptions schedule = make_schedule();
     std::mt19937_64 rng(options_.seed);
     const AnnealResult r = anneal(poses_, movable_, schedule, callbacks(), rng, stop_);
@@ -102,13 +97,13 @@ class DesignRun {
     const auto p0 = Clock::now();
     if (options_.layouts_out) {
       options_.layouts_out->emplace_back();
-      for (int i = 0; i < cspace_.object_count(); ++i)
-        options_.layouts_out->back().push_back(cspace_.object_pose(i));
+      for (int i = 0; i < round_.cspace().object_count(); ++i)
+        options_.layouts_out->back().push_back(round_.cspace().object_pose(i));
     }
     outcome_ = round_.plan(iteration_, iteration_legs_, bound);
     result_.tours_invalidated += outcome_.dropped;
     result_.tours_planned += outcome_.kept;
-    for (int k = 0; k < outcome_.kept; ++k) result_.legs_refused += tours_[k].stats.legs_refused;
+    for (int k = 0; k < outcome_.kept; ++k) result_.legs_refused += round_.tours()[k].stats.legs_refused;
     if (outcome_.rejected) skipped_from(outcome_.kept);
     const double ms = 1e3 * seconds_since(p0);
     planning_ms_ += ms;
@@ -137,12 +132,14 @@ class DesignRun {
 
   AnnealCallbacks callbacks() {
     AnnealCallbacks cb;
-    cb.move_valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
+    cb.move_valid = valid_;
     cb.cost = [this](const std::vector<Pose2>& p, const Move& move, const Acceptance& a) {
       return cost(p, move, a);
     };
     cb.rejected = [this](const Move& move) { undo(move); };
-    cb.layout_valid = [this](const std::vector<Pose2>&) { return layout_violation(work_).empty(); };
+    cb.layout_valid = [this](const std::vector<Pose2>&) {
+      return layout_violation(round_.scene()).empty();
+    };
     cb.new_best = [this] { new_best(); };
     cb.progress = [this](const TraceEntry& e) { step_done(e); };
     cb.focus = [this] { return focus_current_; };
@@ -156,8 +153,8 @@ class DesignRun {
   //! A preference move (AnnealCallbacks::preferred): one of the object's
   //! preferred poses or a wall slot, uniformly.
   std::optional<Pose2> preferred_move(const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
-    std::vector<Pose2> c = preferred_poses(work_, model_, p, o);
-    if (const auto slot = wall_slot(work_, o, rng)) c.push_back(*slot);
+    std::vector<Pose2> c = preferred_poses(round_.scene(), model_, p, o);
+    if (const auto slot = wall_slot(round_.scene(), o, rng)) c.push_back(*slot);
     if (c.empty()) return std::nullopt;
     return c[uniform_index(rng, c.size())];
   }
@@ -166,15 +163,7 @@ class DesignRun {
   //! Every object is taken at `p` (a pair move of the polish checks the
   //! partner against the object's new pose).
   bool move_valid(const std::vector<Pose2>& p, int moved) {
-    std::vector<std::pair<std::size_t, Pose2>> placed;
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (work_.objects[i].pose != p[i]) {
-        placed.emplace_back(i, work_.objects[i].pose);
-        work_.objects[i].pose = p[i];
-      }
-    const bool ok = object_violation(work_, moved).empty();
-    for (const auto& [i, pose] : placed) work_.objects[i].pose = pose;
-    return ok && !escape_.covers_a_stop(p[moved], moved);
+    return round_.fits(p, moved) && !escape_.covers_a_stop(p[moved], moved);
   }
 
   //! Applies a proposal to the C-space, tours it and returns its cost, or
@@ -182,19 +171,18 @@ class DesignRun {
   double cost(const std::vector<Pose2>& p, const Move& move, const Acceptance& acceptance) {
     if (move.object < 0) return current_terms_.total();
     ++iteration_;
-    work_.objects[move.object].pose = move.to;
-    cspace_.move_object(move.object, move.to);
+    round_.move(move.object, move.to);
     planning_ms_ = 0.0;
     rejected_early_ = false;
     outcome_ = {};
     if (!plan_every_iteration_) {
-      proposed_terms_ = model_.evaluate(p, tours_);
+      proposed_terms_ = model_.evaluate(p, round_.tours());
       return proposed_terms_.total();
     }
     const InteriorCosts in = model_.interior(p);
     if (!options_.planner.early) {
       plan_current();
-      proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage());
+      proposed_terms_ = model_.evaluate(in, round_.tours(), &round_.blockage());
       return proposed_terms_.total();
     }
     // Rejected on the interior alone, or on the grid's floors: no tour is
@@ -209,17 +197,17 @@ class DesignRun {
     plan_current(&bound);
     if (outcome_.rejected) {
       rejected_early_ = true;
-      proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage(), outcome_.kept);
+      proposed_terms_ = model_.evaluate(in, round_.tours(), &round_.blockage(), outcome_.kept);
       return outcome_.bound;
     }
-    proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage());
+    proposed_terms_ = model_.evaluate(in, round_.tours(), &round_.blockage());
     return proposed_terms_.total();
   }
 
   //! A proposal rejected before any tour was planned, on the lower bound `bound`.
   double rejected_unplanned(const InteriorCosts& in, double bound) {
     rejected_early_ = true;
-    proposed_terms_ = model_.evaluate(in, tours_, &round_.blockage(), 0);
+    proposed_terms_ = model_.evaluate(in, round_.tours(), &round_.blockage(), 0);
     skipped_from(0);
     return bound;
   }
@@ -240,12 +228,6 @@ class DesignRun {
     return floors;
   }
 
-  //! Moves object `o` to `to` in the working scene, the C-space and the grid.
-  void place(int o, const Pose2& to) {
-    work_.objects[o].pose = to;
-    cspace_.move_object(o, to);
-    round_.layout_changed();
-  }
 
   //! Counts an early rejection that left tours `first`… unplanned.
   void skipped_from(int first) {
@@ -256,20 +238,17 @@ class DesignRun {
     }
   }
 
-  void undo(const Move& move) {
-    work_.objects[move.object].pose = move.from;
-    cspace_.move_object(move.object, move.from);
-  }
+  void undo(const Move& move) { round_.move(move.object, move.from); }
 
   //! Called for the initial layout (before any proposal) or right after an
-  //! accepted proposal: `tours_` and the terms belong to the current layout.
+  //! accepted proposal: the round's tours and the terms belong to the current layout.
   void new_best() {
     if (iteration_ == 0) {
       result_.final = current_terms_;
       result_.tours = current_tours_;
     } else {
       result_.final = proposed_terms_;
-      result_.tours = tours_;
+      result_.tours = round_.tours();
     }
   }
 
@@ -286,7 +265,7 @@ class DesignRun {
     }
     if (e.accepted) {
       current_terms_ = proposed_terms_;
-      current_tours_ = tours_;
+      current_tours_ = round_.tours();
       // Right after the decision the round's tours and grades are still the
       // accepted layout's: the focus is computed for accepted layouts only.
       focus_current_ = plan_every_iteration_ ? escape_.walling_objects() : std::vector<int>{};
@@ -300,30 +279,30 @@ class DesignRun {
   CostTerms replan(const std::vector<Pose2>& p) {
     ++iteration_;
     plan_current();
-    return model_.evaluate(p, tours_, &round_.blockage());
+    return model_.evaluate(p, round_.tours(), &round_.blockage());
   }
 
   //! The preference arrangement (optimize/arrange.h) of the best layout
   //! `poses` (placed; toured: `terms` and result_.tours).
   void arrange_best(std::vector<Pose2>& poses, CostTerms& terms) {
     ArrangeHooks hooks;
-    hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
-    hooks.set = [this](int o, const Pose2& to) { work_.objects[o].pose = to; };
+    hooks.valid = valid_;
+    hooks.set = [this](int o, const Pose2& to) { round_.sketch(o, to); };
     hooks.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
       return preferred_move(p, o, rng);
     };
     ToursHooks toured;
-    toured.place = [this](int o, const Pose2& to) { place(o, to); };
+    toured.place = move_;
     toured.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
     for (int k = 0; k < kArrangeRounds; ++k) {
-      // The best layout's tours: tours_ may hold the last proposal's, whose
+      // The best layout's tours: the round's may hold the last proposal's, whose
       // tail an early rejection left to the threads' timing.
       const ArrangeReport a = arrange_toured(scene_, model_, movable_, result_.tours, poses,
                                              terms, moves(), hooks, toured, options_.seed + k,
                                              stop_);
       result_.arrange.add(a, k == 0);
       if (!a.kept) break;
-      result_.tours = tours_;
+      result_.tours = round_.tours();
     }
   }
 
@@ -331,26 +310,24 @@ class DesignRun {
   //! result_.layout, result_.final and result_.tours.
   void polish_best(const AnnealResult& r) {
     std::vector<Pose2> poses = r.best;
-    for (std::size_t i = 0; i < poses.size(); ++i)
-      if (cspace_.object_pose(static_cast<int>(i)) != poses[i])
-        place(static_cast<int>(i), poses[i]);
+    round_.place(poses);
     poses_ = poses;
     CostTerms terms = result_.final;
     if (!plan_every_iteration_) {
       iteration_ = r.proposals + 1;
       plan_current();
-      terms = model_.evaluate(poses, tours_, &round_.blockage());
-      result_.tours = tours_;
+      terms = model_.evaluate(poses, round_.tours(), &round_.blockage());
+      result_.tours = round_.tours();
       result_.final = terms;
     }
     arrange_best(poses, terms);
     result_.polish.tours_found_before = terms.tours_found;
     result_.polish.met_before = check_preferences(scene_, model_, poses).met;
     PolishHooks hooks;
-    hooks.valid = [this](const std::vector<Pose2>& p, int moved) { return move_valid(p, moved); };
-    hooks.place = [this](int o, const Pose2& to) { place(o, to); };
+    hooks.valid = valid_;
+    hooks.place = move_;
     hooks.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
-    hooks.kept = [this] { result_.tours = tours_; };
+    hooks.kept = [this] { result_.tours = round_.tours(); };
     hooks.tours = [this]() -> const std::vector<planning::Tour>& { return result_.tours; };
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
@@ -375,20 +352,18 @@ class DesignRun {
     round_.place(p);
     std::vector<Pose2> q = p;
     DesignResult::Unblock stats;
-    const auto put = [this](int o, const Pose2& to) { place(o, to); };
-    const auto valid = [this](const std::vector<Pose2>& x, int moved) { return move_valid(x, moved); };
-    if (escape_.unblock(q, options_.seed + 1, stop_, valid, put, stats)) {
+    if (escape_.unblock(q, options_.seed + 1, stop_, valid_, move_, stats)) {
       const CostTerms terms = replan(q);
       if (terms.tours_found > result_.final.tours_found) {
         r.unblocked = terms.tours_found - result_.final.tours_found;
-        p = q, result_.tours = tours_, result_.final = terms;
+        p = q, result_.tours = round_.tours(), result_.final = terms;
         for (std::size_t i = 0; i < p.size(); ++i) result_.layout.objects[i].pose = p[i];
       }
     }
     r.ran = true, r.tours_found = round_.rescue(p, result_.tours, ++iteration_);
     if (r.tours_found > 0) {
-      result_.tours = tours_;
-      result_.final = model_.evaluate(p, tours_, &round_.blockage());
+      result_.tours = round_.tours();
+      result_.final = model_.evaluate(p, round_.tours(), &round_.blockage());
     }
     r.ms = 1e3 * seconds_since(t);
   }
@@ -410,12 +385,11 @@ class DesignRun {
     const bool polished = options_.planner.prefer && r.best_valid && !(stop_ && stop_->load());
     if (polished) polish_best(r);
     if (!plan_every_iteration_ && r.best_valid && !polished) {
-      for (std::size_t i = 0; i < scene_.objects.size(); ++i)
-        cspace_.move_object(static_cast<int>(i), r.best[i]);
+      round_.place(r.best);
       iteration_ = r.proposals + 1;
       plan_current();
-      result_.tours = tours_;
-      result_.final = model_.evaluate(r.best, tours_, &round_.blockage());
+      result_.tours = round_.tours();
+      result_.final = model_.evaluate(r.best, round_.tours(), &round_.blockage());
     }
     if (options_.planner.rescue && result_.valid) rescue_tours();
     result_.proposals = r.proposals;
@@ -449,14 +423,15 @@ class DesignRun {
   std::vector<Sequence> sequences_;
   CostModel model_;
   TourRound round_;
-  geometry::Scene& work_;
-  geometry::CSpace& cspace_;
-  std::vector<planning::Tour>& tours_;
   std::vector<Pose2> poses_;
   std::vector<Pose2> poses_initial_;  //!< the input layout's
   std::vector<bool> movable_;
   bool plan_every_iteration_ = true;
   EscapePolicy escape_;
+  //! The exact checks of a move (move_valid) and a move of the working
+  //! layout, as the escape policy, the arrangement and the polish take them.
+  EscapePolicy::ValidFn valid_;
+  EscapePolicy::PlaceFn move_;
   std::vector<int> focus_current_;  //!< walling_objects() of the current layout
   int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
   double planning_ms_ = 0.0;

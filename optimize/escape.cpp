@@ -16,14 +16,14 @@ namespace hrs::optimize {
 int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
                            const PlaceFn& place) {
   static constexpr int kSeparateDraws = 500;
-  if (!escape_ || layout_violation(work_).empty()) return 0;
+  if (!escape_ || layout_violation(round_.scene()).empty()) return 0;
   std::mt19937_64 rng(splitmix64(seed ^ 0x7365'7061'7261'7465ULL));
   const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
   int moved = 0;
-  for (int pass = 0; pass < 3 && !layout_violation(work_).empty(); ++pass) {
+  for (int pass = 0; pass < 3 && !layout_violation(round_.scene()).empty(); ++pass) {
     for (std::size_t i = 0; i < poses.size(); ++i) {
       const int o = static_cast<int>(i);
-      if (!movable_[i] || object_violation(work_, o).empty()) continue;
+      if (!movable_[i] || object_violation(round_.scene(), o).empty()) continue;
       for (int draw = 0; draw < kSeparateDraws; ++draw) {
         Pose2 to = poses[i];
         to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
@@ -48,8 +48,6 @@ EscapePolicy::EscapePolicy(const geometry::Scene& scene, TourRound& round,
                            const std::vector<bool>& movable, bool escape, bool plan_every)
     : scene_(scene),
       round_(round),
-      work_(round.work()),
-      cspace_(round.cspace()),
       sequences_(sequences),
       movable_(movable),
       escape_(escape),
@@ -60,7 +58,7 @@ std::vector<int> EscapePolicy::stop_objects() const {
   std::vector<int> stops;
   for (const Sequence& s : sequences_)
     for (std::size_t i = 1; i < s.nodes.size(); ++i) {
-      const int o = work_.find_object(s.nodes[i]);
+      const int o = round_.scene().find_object(s.nodes[i]);
       if (o >= 0 && std::find(stops.begin(), stops.end(), o) == stops.end()) stops.push_back(o);
     }
   std::sort(stops.begin(), stops.end());
@@ -96,28 +94,27 @@ void EscapePolicy::refresh_open_stops() {
 //! footprint are asked, with the object moved in the C-space and back.
 bool EscapePolicy::covers_a_stop(const Pose2& to, int moved) {
   if (!escape_ || !plan_every_ || open_stops_.empty()) return false;
-  geometry::Object o = work_.objects[moved];
+  geometry::Object o = round_.scene().objects[moved];
   o.pose = to;
   const geometry::Polygon fp = geometry::world_footprint(o);
-  const Pose2 from = cspace_.object_pose(moved);
-  bool moved_in_cspace = false;
-  bool covers = false;
+  // A goal pose's chair lies within gap + its diagonal of the stop.
+  std::vector<int> near;
   for (int s : open_stops_) {
-    // A goal pose's chair lies within gap + its diagonal of the stop.
-    const double reach = work_.objects[s].approach_or_default().gap + 0.01 +
+    const geometry::Object& stop = round_.scene().objects[s];
+    const double reach = stop.approach_or_default().gap + 0.01 +
                          std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
-    if (s != moved && geometry::polygon_distance(geometry::world_footprint(work_.objects[s]), fp) > reach)
-      continue;
-    if (!moved_in_cspace) {
-      cspace_.move_object(moved, to);
-      moved_in_cspace = true;
-    }
-    if (round_.goals_of(s).empty()) {
-      covers = true;
-      break;
-    }
+    if (s == moved || geometry::polygon_distance(geometry::world_footprint(stop), fp) <= reach)
+      near.push_back(s);
   }
-  if (moved_in_cspace) cspace_.move_object(moved, from);
+  bool covers = false;
+  if (!near.empty())
+    round_.trial(moved, to, [&] {
+      for (int s : near)
+        if (round_.goals_of(s).empty()) {
+          covers = true;
+          break;
+        }
+    });
   if (covers) ++covering_moves_;
   return covers;
 }
@@ -130,7 +127,7 @@ std::optional<Pose2> EscapePolicy::unblock_move(int o, const std::vector<Pose2>&
                                               const geometry::Box& box, std::mt19937_64& rng,
                                               const ValidFn& valid) {
   constexpr double kQuarter = std::numbers::pi / 2;
-  const Pose2 from = work_.objects[o].pose;
+  const Pose2 from = round_.scene().objects[o].pose;
   const double kind = uniform01(rng);
   for (int attempt = 0; attempt < 50; ++attempt) {
     Pose2 to = from;
@@ -191,7 +188,7 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
     const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);
     ++stats.proposals;
     if (!to) continue;
-    const Pose2 from = work_.objects[o].pose;
+    const Pose2 from = round_.scene().objects[o].pose;
     place(o, *to);
     double next = 0.0;
     std::vector<int> now = walled_off(stops, next);
@@ -219,7 +216,7 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
   // The stops' footprints: a stop whose goal poses are all covered (by
   // what walls it in) has no free goal pose to measure from.
   std::vector<geometry::Polygon> targets;
-  for (int s : stops) targets.push_back(geometry::world_footprint(work_.objects[s]));
+  for (int s : stops) targets.push_back(geometry::world_footprint(round_.scene().objects[s]));
   std::vector<int> candidates;
   if (in_grid) {
     candidates = round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25);
@@ -229,7 +226,7 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
   for (int i : candidates) {
     if (!movable_[i]) continue;
     bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
-    const geometry::Polygon fp = geometry::world_footprint(work_.objects[i]);
+    const geometry::Polygon fp = geometry::world_footprint(round_.scene().objects[i]);
     for (const geometry::Polygon& t : targets) near = near || geometry::polygon_distance(fp, t) <= kFocusReach;
     if (near) out.push_back(i);
   }

@@ -69,8 +69,6 @@ class EscapePolicy {
 
   const geometry::Scene& scene_;
   TourRound& round_;
-  geometry::Scene& work_;
-  geometry::CSpace& cspace_;
   const std::vector<Sequence>& sequences_;
   const std::vector<bool>& movable_;
   bool escape_;

@@ -78,11 +78,7 @@ std::vector<planning::GoalPose> TourRound::goals_of(int index) const {
 TourRound::Outcome TourRound::plan(int iteration, std::optional<planning::ReuseCounters>& legs,
                                    const Bound* bound) {
   const int m = static_cast<int>(tours_.size());
-  if (!prepared_) {
-    gate_.invalidate();
-    grades_.assign(work_.objects.size(), -1.0);
-  }
-  prepared_ = false;
+  follow_layout();
   cancel_.store(false);
   std::fill(finished_.begin(), finished_.end(), 0);
   Outcome out;
@@ -152,9 +148,7 @@ std::vector<double> TourRound::stop_grades(int k) {
 }
 
 std::vector<double> TourRound::certain_floors(const CostModel& model) {
-  gate_.invalidate();
-  grades_.assign(work_.objects.size(), -1.0);
-  prepared_ = true;
+  follow_layout();
   std::vector<double> floors(tours_.size(), 0.0);
   for (std::size_t k = 0; k < tours_.size(); ++k) {
     const auto& nodes = (*sequences_)[k].nodes;
@@ -173,19 +167,59 @@ std::vector<double> TourRound::certain_floors(const CostModel& model) {
   return floors;
 }
 
-void TourRound::place(const std::vector<Pose2>& poses) {
-  for (std::size_t i = 0; i < poses.size(); ++i) {
-    if (cspace_.object_pose(static_cast<int>(i)) == poses[i]) continue;
-    work_.objects[i].pose = poses[i];
-    cspace_.move_object(static_cast<int>(i), poses[i]);
-  }
+void TourRound::follow_gate() {
+  if (gate_version_ == version_) return;
   gate_.invalidate();
+  gate_version_ = version_;
+}
+
+void TourRound::follow_layout() {
+  follow_gate();
+  if (graded_version_ == version_) return;
+  grades_.assign(work_.objects.size(), -1.0);
+  graded_version_ = version_;
+}
+
+void TourRound::move(int o, const Pose2& to) {
+  work_.objects[static_cast<std::size_t>(o)].pose = to;
+  cspace_.move_object(o, to);
+  ++version_;
+}
+
+void TourRound::sketch(int o, const Pose2& to) {
+  work_.objects[static_cast<std::size_t>(o)].pose = to;
+  ++version_;
+}
+
+void TourRound::place(const std::vector<Pose2>& poses) {
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    if (cspace_.object_pose(static_cast<int>(i)) != poses[i]) move(static_cast<int>(i), poses[i]);
+}
+
+bool TourRound::fits(const std::vector<Pose2>& p, int moved) {
+  std::vector<std::pair<std::size_t, Pose2>> saved;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (work_.objects[i].pose != p[i]) {
+      saved.emplace_back(i, work_.objects[i].pose);
+      work_.objects[i].pose = p[i];
+    }
+  const bool ok = object_violation(work_, moved).empty();
+  for (const auto& [i, pose] : saved) work_.objects[i].pose = pose;
+  return ok;
+}
+
+void TourRound::trial(int moved, const Pose2& to, const std::function<void()>& f) {
+  const Pose2 from = cspace_.object_pose(moved);
+  cspace_.move_object(moved, to);
+  f();
+  cspace_.move_object(moved, from);
 }
 
 int TourRound::rescue(const std::vector<Pose2>& poses, const std::vector<planning::Tour>& tours,
                       int iteration) {
   place(poses);
-  grades_.assign(work_.objects.size(), -1.0);
+  ++version_;  // the grades are recomputed for the rescued tours
+  follow_layout();
   tours_ = tours;
   std::vector<int> unfound;
   for (std::size_t k = 0; k < tours_.size(); ++k)

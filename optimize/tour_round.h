@@ -7,6 +7,8 @@
 // and replay_planning() (optimize/design.cpp); not a public header.
 
 #include <atomic>
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -60,11 +62,21 @@ class TourRound {
   TourRound(const geometry::Scene& scene, const DesignOptions& options,
             const std::vector<Sequence>& sequences, const std::atomic<bool>* stop = nullptr);
 
-  geometry::Scene& work() { return work_; }
-  geometry::CSpace& cspace() { return cspace_; }
-  const planning::ReachGate& gate() const { return gate_; }
+  //! The working layout. Every change goes through move(), sketch() or
+  //! place(), which count a layout version. The gate's fill is keyed on it;
+  //! the stop grades are a round's and follow it when the next round starts.
+  const geometry::Scene& scene() const { return work_; }
+  const geometry::CSpace& cspace() const { return cspace_; }
+  //! The free-grid gate of the current layout (refilled at its first query
+  //! after a change).
+  const planning::ReachGate& gate() {
+    follow_gate();
+    return gate_;
+  }
+  std::uint64_t version() const { return version_; }
   int threads() const { return pool_.size(); }
-  std::vector<planning::Tour>& tours() { return tours_; }
+  //! The last round's tours (rescue(): the rescued layout's).
+  const std::vector<planning::Tour>& tours() const { return tours_; }
   //! Each tour's leg grades (optimize/costs.h; empty for found tours).
   const std::vector<std::vector<double>>& blockage() const { return blockage_; }
   //! Objects graded walled off (grade > 0) in this round, index order.
@@ -72,11 +84,20 @@ class TourRound {
   //! The stops where this round's unfound tours broke off (the target of
   //! the first leg not joined), index order.
   std::vector<int> failing_stops();
-  //! Moves every object whose pose differs from `poses` (scene order) in the
-  //! working scene and the C-space; the gate follows.
+  //! Moves object `o` to `to` in the working scene and the C-space.
+  void move(int o, const Pose2& to);
+  //! Moves object `o` in the working scene only (a chain that checks moves
+  //! without touring them: the preference arrangement); place() or move()
+  //! brings the C-space back in step.
+  void sketch(int o, const Pose2& to);
+  //! Moves every object whose C-space pose differs from `poses` (scene order).
   void place(const std::vector<Pose2>& poses);
-  //! The layout changed outside plan(): the gate follows it.
-  void layout_changed() { gate_.invalidate(); }
+  //! The exact checks of object `moved` (object_violation) with every
+  //! object at `p`; the working layout is unchanged afterwards.
+  bool fits(const std::vector<Pose2>& p, int moved);
+  //! Runs `f` with object `moved` at `to` in the C-space, then moves it
+  //! back (a trial that leaves the version and the gate as they were).
+  void trial(int moved, const Pose2& to, const std::function<void()>& f);
   //! Goal poses of object `index` in the current layout.
   std::vector<planning::GoalPose> goals_of(int index) const;
   planning::ReusePlanner* reuse() { return reuse_.get(); }
@@ -89,8 +110,7 @@ class TourRound {
   //! planning: a tour with a stop the gate certifies unreachable
   //! (ReachGate::walls_off) is unfound, with at most the legs before that
   //! stop joined, so it costs at least tour_total() of an unfound tour of
-  //! that depth with the same grades; other tours: 0. Starts the round
-  //! (the next plan() keeps the gate's fill and the grades).
+  //! that depth with the same grades; other tours: 0.
   std::vector<double> certain_floors(const CostModel& model);
   //! The rescue (PlannerConfig::rescue): the objects are placed at `poses`,
   //! the round's tours become `tours` (that layout's), and unfound ones are
@@ -104,6 +124,12 @@ class TourRound {
   static constexpr int kRescueTours = 5, kRescueLegs = 4;
 
  private:
+  //! The gate follows the current layout version.
+  void follow_gate();
+  //! The gate and the grades follow the current layout version (a round
+  //! starts).
+  void follow_layout();
+
   //! Fills blockage_[k]: for an unfound tour, the grade of each leg's stop
   //! (computed once per object and round); empty otherwise.
   void grade(int k);
@@ -128,7 +154,9 @@ class TourRound {
   std::vector<std::vector<double>> blockage_;
   std::vector<char> finished_;
   std::vector<double> grades_;  //!< per object this round (−1: not yet)
-  bool prepared_ = false;       //!< certain_floors() started this round
+  std::uint64_t version_ = 0;         //!< counts layout changes
+  std::uint64_t gate_version_ = ~std::uint64_t{0};    //!< the version the gate follows
+  std::uint64_t graded_version_ = ~std::uint64_t{0};  //!< the version grades_ follow
   std::atomic<bool> cancel_{false};
   std::mutex mutex_;
 };

@@ -147,7 +147,8 @@ std::optional<LegOutcome> ReusePlanner::repair(const LegKey& key, const Pose2& f
   out.source = LegSource::kRepaired;
   out.stats.collision_checks = validator.checks();
   if (chain.nodes.size() < 2) return std::nullopt;
-  LegResult r = planner.plan(start, goal, seed, chain, options_.repair_iterations);
+  LegResult r =
+      planner.plan(start, goal, seed, chain, Termination{}.iterations(options_.repair_iterations));
   add_stats(out.stats, r.stats);
   if (!r.found) {
     out.found = false;
@@ -181,9 +182,11 @@ LegResult ReusePlanner::fresh_plan(const LegKey& key, const Pose2& from, const P
   // The gate is asked, as for the baseline (TourHooks::gate), only once the
   // RRT has run kRefuseAfter iterations in vain: most legs are found or
   // served sooner, and their layouts need no grid fill.
-  const GiveUpCheck check{kRefuseAfter, [&] { return gate_->refuses(from, to); }};
-  LegResult r = planner.plan(from, to, seed, tree, budget, gate_ ? &check : nullptr);
-  if (r.gave_up) slot.proven = true;
+  Termination stop;
+  stop.iterations(budget);
+  if (gate_) stop.ask_after(kRefuseAfter, [&] { return gate_->refuses(from, to); });
+  LegResult r = planner.plan(from, to, seed, tree, stop);
+  if (r.gave_up()) slot.proven = true;
   add_stats(stats, r.stats);
   slot.fresh_iterations = r.stats.iterations;
   return r;

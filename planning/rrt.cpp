@@ -63,10 +63,10 @@ LegPlanner::LegPlanner(const geometry::Scene& scene, const CSpace& cspace, Plann
       goal_order_(options.heading_weight) {}
 
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed,
-                           const GiveUpCheck* check) {
+                           const Termination& stop) {
   RrtTree tree;
   tree.nodes.push_back({from, -1, rs::Path{{}, radius_}, 0.0});
-  return plan(from, to, seed, tree, -1, check);
+  return plan(from, to, seed, tree, stop);
 }
 
 std::int32_t LegPlanner::extend(RrtTree& tree, std::int32_t from_node, const Pose2& target,
@@ -171,7 +171,7 @@ void LegPlanner::try_sample(RrtTree& tree, const Pose2& target, Steering& steeri
 }
 
 LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
-                           int max_iterations, const GiveUpCheck* check) {
+                           const Termination& stop) {
   // Documented preconditions (rrt.h): a tree to grow is rooted at `from`.
   assert(tree.nodes.empty() || geometry::pose_gap(tree.nodes.front().pose, from) <= 1e-9);
   const auto t0 = std::chrono::steady_clock::now();
@@ -188,18 +188,11 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
   std::size_t tree_size_at_goal_attempt = 0;
   std::int32_t goal_node = -1;
   if (ends_free && pose_gap(from, to) <= options_.goal_tolerance) goal_node = 0;
-  const int iteration_cap = max_iterations >= 0 ? max_iterations : options_.max_iterations;
+  StopRule rule(stop, options_.max_iterations, options_.max_nodes);
   int it = 0;
-  bool asked = false;
-  while (ends_free && goal_node < 0 && it < iteration_cap &&
-         static_cast<int>(tree.nodes.size()) < options_.max_nodes) {
-    if (check && it == check->after && check->give_up) {
-      asked = true;
-      if (check->give_up()) {
-        result.gave_up = true;
-        break;
-      }
-    }
+  while (ends_free && goal_node < 0) {
+    result.stopped = rule.before_iteration(it, static_cast<int>(tree.nodes.size()));
+    if (result.stopped != StopReason::kNone) break;
     ++it;
     // Goal bias (§III-B): the goal itself, else a sample (one draw each).
     if (unit(rng) < options_.goal_bias) {
@@ -208,12 +201,7 @@ LegResult LegPlanner::plan(const Pose2& from, const Pose2& to, std::uint64_t see
       try_sample(tree, sampler.sample(rng), steering);
     }
   }
-
-  // A search that ends (iteration cap or tree size) before `after` without
-  // the goal still gets its question: a cap below `after` must not mean
-  // that the check is never asked.
-  if (ends_free && goal_node < 0 && !asked && check && check->give_up && check->give_up())
-    result.gave_up = true;
+  if (goal_node < 0) result.stopped = rule.unfound(result.stopped);
   result.found = goal_node >= 0;
   if (result.found) result.path = tree.path_to(goal_node, radius_);
   result.stats.iterations = it;

@@ -8,8 +8,8 @@
 // drives that path: towards the goal the whole curve up to the first invalid
 // pose, towards a sample at most n = 5 steps of `step_length`. Every piece is
 // checked continuously (MotionValidator); a node is added every step along the
-// free part. The search ends when a node reaches the goal or after
-// `max_iterations`.
+// free part. The search ends when a node reaches the goal or when its
+// Termination says so (by default after `max_iterations`).
 //
 // Reuse hooks for the proposed planner (§V): the sample source (RS-
 // decomposition sampling, §V-A), the steering function (RS look-ups through
@@ -34,6 +34,7 @@
 #include "planning/motion_validator.h"
 #include "planning/nearest.h"
 #include "planning/rrt_hooks.h"
+#include "planning/termination.h"
 #include "rs/reeds_shepp.h"
 
 namespace hrs::planning {
@@ -67,20 +68,13 @@ struct LegStats {
   double time_ms = 0.0;                //!< wall time of the query
 };
 
-//! A question the RRT asks once, after `after` iterations without reaching
-//! the goal, or when it stops earlier without the goal (a smaller iteration
-//! cap or a full tree): true stops it there (not found, `gave_up`). The rest of the run is the
-//! same as without it, draw for draw (the baseline asks whether the free
-//! grid separates the leg's ends: then no RRT could find it).
-struct GiveUpCheck {
-  int after = 0;
-  std::function<bool()> give_up;
-};
-
 //! Result of one leg query: the path from `from` to `to` when found.
 struct LegResult {
   bool found = false;
-  bool gave_up = false;  //!< stopped by a GiveUpCheck
+  //! Why the search stopped without the goal (kNone when found, or when an
+  //! end pose is not free and no search ran).
+  StopReason stopped = StopReason::kNone;
+  bool gave_up() const { return stopped == StopReason::kGaveUp; }
   rs::Path path;  //!< driven from the query's `from`; radius = the planner's radius
   LegStats stats;
 };
@@ -108,14 +102,14 @@ class LegPlanner {
              PlannerHooks hooks = {});
 
   //! Plans from `from` to `to` with a fresh tree; deterministic in `seed`.
-  //! `check` (may be null) is asked once (GiveUpCheck).
+  //! `stop` says when the search ends without the goal (termination.h); by
+  //! default at the options' caps.
   LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed,
-                 const GiveUpCheck* check = nullptr);
+                 const Termination& stop = {});
   //! Plans by growing `tree` (its root must be `from`, its edges free in the
   //! current layout: the caller prunes, §V-C). The tree keeps its new nodes.
-  //! `max_iterations` >= 0 overrides the option for this query (a repair, §V-B).
   LegResult plan(const Pose2& from, const Pose2& to, std::uint64_t seed, RrtTree& tree,
-                 int max_iterations = -1, const GiveUpCheck* check = nullptr);
+                 const Termination& stop = {});
 
   const PlannerOptions& options() const { return options_; }
   double radius() const { return radius_; }

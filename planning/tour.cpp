@@ -161,11 +161,19 @@ TourPlanner::Fetch TourPlanner::fetch_leg(std::span<const LegRequest> requests, 
       // The gate is asked only once the RRT has run kRefuseAfter iterations
       // in vain: most legs are found sooner, and their layouts need no grid
       // fill. A refused leg could never be found, so the tour is the same.
-      const GiveUpCheck check{kRefuseAfter, [&] { return hooks_.gate->refuses(r.from, r.to); }};
-      LegResult result =
-          planner_.plan(r.from, r.to, leg_seed(seed_, r.key), hooks_.gate ? &check : nullptr);
-      if (result.gave_up) ++tour.stats.legs_refused;
-      if (!result.found && !result.gave_up && hooks_.fallback) {
+      // A cancelled tour is discarded whole (TourHooks::cancel), so its
+      // leg may stop mid-search.
+      Termination stop;
+      if (hooks_.gate)
+        stop.ask_after(kRefuseAfter, [&] { return hooks_.gate->refuses(r.from, r.to); });
+      stop.cancelled_by(hooks_.cancel);
+      LegResult result = planner_.plan(r.from, r.to, leg_seed(seed_, r.key), stop);
+      if (result.stopped == StopReason::kCancelled) {
+        tour.stats.cancelled = true;
+        return Fetch::kCapped;
+      }
+      if (result.gave_up()) ++tour.stats.legs_refused;
+      if (!result.found && !result.gave_up() && hooks_.fallback) {
         if (std::optional<rs::Path> path = hooks_.fallback(r.from, r.to)) {
           result.found = true;
           result.path = *std::move(path);

@@ -58,8 +58,9 @@ struct TourHooks {
   //! gate. Used for the baseline's own legs; the proposed planner asks its
   //! gate inside the provider.
   const ReachGate* gate = nullptr;
-  //! Non-null and set: the tour stops before its next leg and is not found
-  //! (the caller no longer needs it; see optimize/design.cpp).
+  //! Non-null and set: the tour stops (before its next leg, or the
+  //! baseline's RRT within its leg) and is not found (the caller no longer
+  //! needs it; see optimize/tour_round.cpp).
   const std::atomic<bool>* cancel = nullptr;
   //! Non-null and set while the constructor generates the goal poses: the
   //! constructor throws hrs::Interrupted (the user asked to stop before the

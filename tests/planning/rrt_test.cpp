@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -114,28 +115,75 @@ TEST(LegPlanner, UnsolvableQueriesReturnNotFoundWithinTheCaps) {
                 static_cast<unsigned long long>(r.stats.collision_checks), r.stats.time_ms);
   }
 }
-TEST(LegPlanner, GiveUpCheckIsAskedOnceEvenUnderASmallerCap) {
+TEST(LegPlanner, GiveUpQuestionIsAskedOnceEvenUnderASmallerCap) {
   // The walled-off pocket: no motion exists, so the RRT never finds the goal.
+  // Whichever stop comes first (the question at 300, an iteration cap below
+  // or above it), the question is asked exactly once.
   const geometry::Scene scene = pocket_scene();
   const geometry::CSpace cspace(scene);
   const Pose2 from{1.5, 2.0, 0.0}, to{5.5, 2.0, 0.0};
   LegPlanner planner(scene, cspace);
-  for (const int cap : {1, 20, 299, 300, 301, 600}) {
+  for (const int cap : {0, 1, 20, 299, 300, 301, 600}) {
     for (const bool answer : {false, true}) {
       RrtTree tree;
       int asked = 0;
-      const GiveUpCheck check{300, [&] {
-                                ++asked;
-                                return answer;
-                              }};
-      const LegResult r = planner.plan(from, to, 5, tree, cap, &check);
+      const Termination stop = Termination{}.iterations(cap).ask_after(300, [&] {
+        ++asked;
+        return answer;
+      });
+      const LegResult r = planner.plan(from, to, 5, tree, stop);
       const std::string what = "cap " + std::to_string(cap) + (answer ? " yes" : " no");
       EXPECT_FALSE(r.found) << what;
-      EXPECT_EQ(asked, 1) << what;  // once, whichever comes first
-      EXPECT_EQ(r.gave_up, answer) << what;
+      EXPECT_EQ(asked, 1) << what;
+      EXPECT_EQ(r.gave_up(), answer) << what;
+      EXPECT_EQ(r.stopped, answer ? StopReason::kGaveUp : StopReason::kIterations) << what;
       EXPECT_EQ(r.stats.iterations, answer ? std::min(cap, 300) : cap) << what;
     }
   }
+}
+
+TEST(LegPlanner, TreeSizeCapStopsAndStillAsksTheQuestion) {
+  const geometry::Scene scene = pocket_scene();
+  const geometry::CSpace cspace(scene);
+  const Pose2 from{1.5, 2.0, 0.0}, to{5.5, 2.0, 0.0};
+  LegPlanner planner(scene, cspace);
+  for (const int nodes : {1, 5, 40}) {
+    int asked = 0;
+    const LegResult r = planner.plan(from, to, 9, Termination{}.nodes(nodes).ask_after(300, [&] {
+      ++asked;
+      return false;
+    }));
+    EXPECT_FALSE(r.found);
+    EXPECT_EQ(r.stopped, StopReason::kTreeFull) << nodes;
+    EXPECT_GE(r.stats.tree_nodes, nodes);
+    EXPECT_LT(r.stats.iterations, 300) << nodes;  // stopped by the tree, before the question's turn
+    EXPECT_EQ(asked, 1) << nodes;
+  }
+}
+
+TEST(LegPlanner, CancellationStopsTheSearchAndNeverAsksTheQuestion) {
+  const geometry::Scene scene = pocket_scene();
+  const geometry::CSpace cspace(scene);
+  const Pose2 from{1.5, 2.0, 0.0}, to{5.5, 2.0, 0.0};
+  LegPlanner planner(scene, cspace);
+  std::atomic<bool> cancel{true};
+  int asked = 0;
+  const Termination stop = Termination{}.cancelled_by(&cancel).ask_after(0, [&] {
+    ++asked;
+    return true;
+  });
+  LegResult r = planner.plan(from, to, 3, stop);
+  EXPECT_EQ(r.stopped, StopReason::kCancelled);
+  EXPECT_EQ(r.stats.iterations, 0);
+  EXPECT_EQ(asked, 0);
+  // Not raised: the same search runs to its cap, draw for draw as without a flag.
+  cancel.store(false);
+  r = planner.plan(from, to, 3, Termination{}.cancelled_by(&cancel).iterations(50));
+  const LegResult plain = planner.plan(from, to, 3, Termination{}.iterations(50));
+  EXPECT_EQ(r.stopped, StopReason::kIterations);
+  EXPECT_EQ(r.stats.iterations, 50);
+  EXPECT_EQ(r.stats.tree_nodes, plain.stats.tree_nodes);
+  EXPECT_EQ(r.stats.collision_checks, plain.stats.collision_checks);
 }
 
 TEST(LegPlanner, EveryLegInAnEmptyRoomIsFoundAndValid) {
