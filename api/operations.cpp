@@ -12,6 +12,7 @@
 #include "geometry/error.h"
 #include "geometry/free_grid.h"
 #include "geometry/polygon_ops.h"
+#include "io/files.h"
 #include "planning/reuse.h"
 #include "planning/rrt.h"
 #include "planning/tour.h"
@@ -274,9 +275,9 @@ const std::vector<std::string>& extra_file_names() {
 
 void write_design_files(const optimize::DesignResult& result, const optimize::RunInfo& info,
                         const DesignExtras& extras, const std::filesystem::path& dir) {
-  optimize::require_writable_directory(dir);
+  io::require_writable_directory(dir);
   const auto& names = extra_file_names();
-  optimize::write_files_atomic({{dir / names[0], extras.accessibility},
+  io::write_files_atomic({{dir / names[0], extras.accessibility},
                                 {dir / names[1], extras.viewer}});
   optimize::write_design(result, info, dir);
 }

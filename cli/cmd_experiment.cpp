@@ -21,6 +21,7 @@
 #include "experiments/study.h"
 #include "geometry/error.h"
 #include "geometry/scene.h"
+#include "io/files.h"
 #include "optimize/design_io.h"
 
 namespace hrs::cli {
@@ -206,7 +207,7 @@ int merge_command(const Args& args, const experiments::StudyConfig& config) {
     shards.emplace_back(args.positional()[i]);
   }
   create_out(config.out);
-  const optimize::DirectoryLock lock(config.out);
+  const io::DirectoryLock lock(config.out);
   int missing = 0;
   for (const experiments::Study* s : select(args.positional()[1])) {
     const int m = experiments::merge_shards(*s, config, shards);
@@ -236,7 +237,7 @@ int run_command(const Args& args, const experiments::StudyConfig& config) {
   check_scenes(chosen, config);
   // One writer per output root: a second sweep into it is refused.
   create_out(config.out);
-  const optimize::DirectoryLock lock(config.out);
+  const io::DirectoryLock lock(config.out);
 
   g_stop.store(false);
   struct sigaction action {};

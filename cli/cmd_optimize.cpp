@@ -32,6 +32,7 @@
 #include "cli/commands.h"
 #include "geometry/error.h"
 #include "geometry/scene.h"
+#include "io/files.h"
 #include "optimize/design.h"
 #include "optimize/design_io.h"
 #include "planning/reuse.h"
@@ -210,7 +211,7 @@ geometry::Scene prepare_design(const DesignRequest& r) {
   for (const std::string& w : geometry::degree_like_angles(scene, path == "-" ? "stdin" : path))
     std::cerr << "hrspace design: warning: " << w << "\n";
   // The output directory before any work: an unwritable --out loses nothing.
-  optimize::require_writable_directory(r.out);
+  io::require_writable_directory(r.out);
   remove_stale_outputs(r.out, r.designs > 1, r.designs,
                        true);  // refuses foreign files now, not at the end
   r.apply_weights(scene);
@@ -305,7 +306,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
 //! sit beside the new contact sheet unnoticed.
 void finish_outputs(const DesignRequest& r, const std::vector<std::string>& svgs) {
   if (r.designs > 1) {
-    optimize::write_files_atomic(
+    io::write_files_atomic(
         {{std::filesystem::path(r.out) / "contact_sheet.svg", optimize::contact_sheet_svg(svgs)}});
   }
   const auto written = static_cast<long>(svgs.size());
@@ -328,7 +329,7 @@ int cmd_design(const Argv& argv) {
   const DesignRequest request = design_request(args);
   const geometry::Scene scene = prepare_design(request);
   // One writer per --out: a second design into it is refused, not mixed in.
-  const optimize::DirectoryLock lock(request.out);
+  const io::DirectoryLock lock(request.out);
   StopSignalHandlers handlers;
   handlers.install();
   const bool tty = isatty(STDERR_FILENO) != 0;

@@ -10,6 +10,7 @@
 
 #include "geometry/error.h"
 #include "geometry/scene.h"
+#include "io/files.h"
 #include "optimize/design_io.h"
 
 namespace hrs::experiments {
@@ -189,7 +190,7 @@ std::string read_text(const std::filesystem::path& path) {
 }
 
 void write_text_atomic(const std::filesystem::path& path, const std::string& text) {
-  optimize::write_files_atomic({{path, text}});
+  io::write_files_atomic({{path, text}});
 }
 
 }  // namespace hrs::experiments

@@ -5,11 +5,6 @@
 #include "optimize/design_io.h"
 #include "optimize/preferences_json.h"
 
-#include <atomic>
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -21,6 +16,7 @@
 
 #include "geometry/error.h"
 #include "geometry/version.h"
+#include "io/files.h"
 #include "planning/tour_json.h"
 
 namespace hrs::optimize {
@@ -46,104 +42,8 @@ json terms_json(const CostTerms& t) {
 
 json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
-//! A temporary name beside `path`, unique to this process and call: jobs
-//! of one process (the experiments) may write the same file at once.
-std::filesystem::path temporary_beside(const std::filesystem::path& path) {
-  static std::atomic<long> calls{0};
-  std::string name = ".";
-  name += path.filename().string();
-  name += ".tmp-";
-  name += std::to_string(::getpid());
-  name += "-";
-  name += std::to_string(calls.fetch_add(1));
-  return path.parent_path() / name;
-}
-
-//! Writes `text` to a new file at `path` and flushes it to disk; false with
-//! errno set on failure.
-bool write_synced(const std::filesystem::path& path, const std::string& text) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) return false;
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int saved = n < 0 ? errno : EIO;
-      ::close(fd);
-      errno = saved;
-      return false;
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) {
-    const int saved = errno;
-    ::close(fd);
-    errno = saved;
-    return false;
-  }
-  return ::close(fd) == 0;
-}
-
 }  // namespace
 
-void write_files_atomic(const std::vector<std::pair<std::filesystem::path, std::string>>& files) {
-  std::vector<std::filesystem::path> temporaries;
-  auto discard = [&] {
-    std::error_code ignored;
-    for (const auto& t : temporaries) std::filesystem::remove(t, ignored);
-  };
-  for (const auto& [path, text] : files) {
-    temporaries.push_back(temporary_beside(path));
-    if (!write_synced(temporaries.back(), text)) {
-      const std::string reason = std::strerror(errno);
-      discard();
-      throw OutputError(path.string() + ": cannot write file: " + reason);
-    }
-  }
-  for (std::size_t i = 0; i < files.size(); ++i) {
-    if (::rename(temporaries[i].c_str(), files[i].first.c_str()) != 0) {
-      const std::string reason = std::strerror(errno);
-      discard();
-      throw OutputError(files[i].first.string() + ": cannot replace file: " + reason);
-    }
-  }
-}
-
-DirectoryLock::DirectoryLock(const std::filesystem::path& dir) {
-  const std::filesystem::path path = dir / ".hrspace.lock";
-  fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd_ < 0) throw OutputError(path.string() + ": cannot create lock file: " + std::strerror(errno));
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
-    const int err = errno;
-    ::close(fd_);
-    fd_ = -1;
-    if (err == EWOULDBLOCK)
-      throw InputError(dir.string() + ": in use by another hrspace run (it holds " + path.string() +
-                       "); wait for it to end or choose another --out");
-    throw OutputError(path.string() + ": cannot lock: " + std::strerror(err));
-  }
-}
-
-DirectoryLock::~DirectoryLock() {
-  if (fd_ >= 0) ::close(fd_);  // closing releases the flock
-}
-
-void require_writable_directory(const std::filesystem::path& dir) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir.string() + ": cannot create directory: " + ec.message());
-  if (!std::filesystem::is_directory(dir, ec)) {
-    throw InputError(dir.string() + ": exists and is not a directory");
-  }
-  const std::filesystem::path probe = temporary_beside(dir / "write-check");
-  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) {
-    throw InputError(dir.string() + ": directory is not writable: " + std::strerror(errno));
-  }
-  ::close(fd);
-  std::filesystem::remove(probe, ec);
-}
 
 const std::vector<std::string>& design_file_names() {
   static const std::vector<std::string> names{"layout.json", "tours.json", "design.svg",
@@ -342,7 +242,7 @@ void write_design(const DesignResult& result, const RunInfo& info,
   // finds no manifest, or one that does not match, knows a write was cut.
   std::filesystem::remove(dir / "manifest.json", ec);
   if (ec) throw OutputError((dir / "manifest.json").string() + ": cannot remove: " + ec.message());
-  write_files_atomic(files);
+  io::write_files_atomic(files);
   json manifest = {{"format", "hrspace-design-manifest/1"}, {"files", json::array()}};
   for (const auto& [path, text] : files) {
     std::uint64_t h = 14695981039346656037ull;  // FNV-1a, 64 bit
@@ -352,7 +252,7 @@ void write_design(const DesignResult& result, const RunInfo& info,
     manifest["files"].push_back(
         {{"name", path.filename().string()}, {"bytes", text.size()}, {"fnv1a64", hex}});
   }
-  write_files_atomic({{dir / "manifest.json", manifest.dump(1) + "\n"}});
+  io::write_files_atomic({{dir / "manifest.json", manifest.dump(1) + "\n"}});
 }
 
 }  // namespace hrs::optimize
