@@ -311,6 +311,7 @@ class DesignRun {
   void polish_best(const AnnealResult& r) {
     std::vector<Pose2> poses = r.best;
     round_.place(poses);
+    escape_.refresh_open_stops();  // the covered-stop rule asks the best layout's stops
     poses_ = poses;
     CostTerms terms = result_.final;
     if (!plan_every_iteration_) {
@@ -350,6 +351,7 @@ class DesignRun {
     std::vector<Pose2> p;  // the final layout
     for (const auto& o : result_.layout.objects) p.push_back(o.pose);
     round_.place(p);
+    escape_.refresh_open_stops();
     std::vector<Pose2> q = p;
     DesignResult::Unblock stats;
     if (escape_.unblock(q, options_.seed + 1, stop_, valid_, move_, stats)) {
