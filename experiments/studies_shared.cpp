@@ -8,10 +8,9 @@
 #include <cctype>
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <string>
-#include <string_view>
 
+#include "api/design_request.h"
 #include "api/reuse_list.h"
 #include "experiments/runner.h"
 #include "geometry/error.h"
@@ -24,29 +23,6 @@ namespace hrs::experiments::shared {
 namespace fs = std::filesystem;
 
 namespace {
-
-//! The default preset with every §V technique off but those in `keep`,
-//! derived from the one technique list (planning::ReuseOptions::techniques()).
-optimize::PlannerConfig default_with_only(std::initializer_list<std::string_view> keep) {
-  optimize::PlannerConfig c = optimize::PlannerConfig::from_preset("default");
-  for (const auto& t : planning::ReuseOptions::techniques())
-    if (std::find(keep.begin(), keep.end(), std::string_view(t.name)) == keep.end())
-      c.reuse.*(t.on) = false;
-  return c;
-}
-
-//! The planners the studies compare, by the name in run keys and tables: the
-//! four presets, "all" (the default preset under its older study name), and
-//! two ablations of the proposed planner: only the RS-decomposition's samples
-//! and steering, and no technique at all.
-optimize::PlannerConfig study_planner(const std::string& name) {
-  if (name == "all") return optimize::PlannerConfig::from_preset("default");
-  if (name == "samples_steering") return default_with_only({"samples", "steering"});
-  if (name == "none") return default_with_only({});
-  for (const auto& p : optimize::PlannerConfig::presets())
-    if (name == p.name) return optimize::PlannerConfig::from_preset(name);
-  throw InputError("unknown planner '" + name + "'");
-}
 
 //! Mean length of the found tours.
 double mean_tour_length(const std::vector<planning::Tour>& tours) {
@@ -158,14 +134,22 @@ std::vector<std::string> seed_list(const StudyConfig& c) {
   return s;
 }
 
+api::DesignRequest design_request(const StudyConfig& config, const std::string& planner,
+                                  std::uint64_t seed) {
+  api::DesignRequest r;
+  r.planner = planner;
+  if (planner == "all") r.planner = "default";
+  if (planner == "samples_steering") r.planner = "default", r.reuse = "samples,steering";
+  if (planner == "none") r.planner = "default", r.reuse = "none";
+  r.seed = static_cast<long long>(seed);
+  r.iterations = config.iterations;
+  r.threads = config.threads;
+  return r;
+}
+
 optimize::DesignOptions design_options(const StudyConfig& config, const std::string& planner,
                                        std::uint64_t seed) {
-  optimize::DesignOptions o;
-  o.seed = seed;
-  o.iterations = config.iterations;
-  o.threads = config.threads;
-  o.planner = study_planner(planner);
-  return o;
+  return design_request(config, planner, seed).options();
 }
 
 optimize::DesignOptions run_options(const RunSpec& spec, const RunContext& context) {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "api/design_request.h"
 #include "experiments/study.h"
 #include "geometry/scene.h"
 #include "optimize/design.h"
@@ -42,7 +43,14 @@ long int_param(const RunSpec& spec, const std::string& name);
 
 // ---- designs ----------------------------------------------------------------
 
-//! Design options for one of the compared planners (kPlanners) and a seed.
+//! The design request of a study's run, as the command and the Python module
+//! make theirs (api::DesignRequest): one of the compared planners (kPlanners)
+//! spelled as --planner/--reuse ("all" is the default preset; the ablations
+//! "samples_steering" and "none" are the default preset with only those §V
+//! techniques), the study's iterations and threads, and `seed`.
+api::DesignRequest design_request(const StudyConfig& config, const std::string& planner,
+                                  std::uint64_t seed);
+//! design_request(...).options(): checked by DesignRequest::validate().
 optimize::DesignOptions design_options(const StudyConfig& config, const std::string& planner,
                                        std::uint64_t seed);
 //! The design options of a run: its planner and seed.

@@ -6,7 +6,6 @@
 #include "optimize/preferences_json.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>

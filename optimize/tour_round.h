@@ -34,7 +34,8 @@ namespace hrs::optimize {
 //! Early rejection (docs/optimize.md): given a Bound, tours are started in
 //! index order and, as each finishes, the longest finished prefix of tours
 //! adds its cost to the bound; once the Acceptance rejects the bound, no
-//! further tour starts and the running ones stop at their next leg. The
+//! further tour starts and the running ones stop (the proposed planner's
+//! before their next leg, the baseline's within the leg's RRT). The
 //! prefix at which that happens depends only on the tours' outcomes, never
 //! on the threads, and the proposed planner keeps only the work of that
 //! prefix (ReusePlanner::end_iteration), so runs stay identical for any
@@ -96,7 +97,9 @@ class TourRound {
   //! object at `p`; the working layout is unchanged afterwards.
   bool fits(const std::vector<Pose2>& p, int moved);
   //! Runs `f` with object `moved` at `to` in the C-space, then moves it
-  //! back (a trial that leaves the version and the gate as they were).
+  //! back (a trial that leaves the version and the gate as they were). `f`
+  //! may ask goal poses (goals_of) but must not query the gate: a fill made
+  //! during the trial would be kept as the current layout's.
   void trial(int moved, const Pose2& to, const std::function<void()>& f);
   //! Goal poses of object `index` in the current layout.
   std::vector<planning::GoalPose> goals_of(int index) const;

@@ -14,10 +14,12 @@
 #include <string>
 
 #include "experiments/runner.h"
+#include "experiments/studies_shared.h"
 #include "experiments/stats.h"
 #include "experiments/study.h"
 #include "experiments/table.h"
 #include "geometry/error.h"
+#include "optimize/planner_config.h"
 
 namespace {
 
@@ -604,6 +606,37 @@ TEST(Studies, EveryStudyHasDistinctRunKeysAndAQuickSweep) {
     EXPECT_EQ(find_study(s.name), &s);
   }
   EXPECT_EQ(find_study("nope"), nullptr);
+}
+
+// The studies ask for designs through the front ends' one contract
+// (api::DesignRequest): their planner names are --planner/--reuse spellings.
+TEST(StudyPlanners, AreDesignRequestsOfThePresetsAndTwoAblations) {
+  StudyConfig config;
+  config.iterations = 123;
+  config.threads = 2;
+  using hrs::optimize::PlannerConfig;
+  for (const auto& p : PlannerConfig::presets()) {
+    const auto o = shared::design_options(config, p.name, 7);
+    EXPECT_EQ(o.planner.name(), PlannerConfig::from_preset(p.name).name()) << p.name;
+    EXPECT_EQ(o.seed, 7u);
+    EXPECT_EQ(o.iterations, 123);
+    EXPECT_EQ(o.threads, 2);
+  }
+  const PlannerConfig all = shared::design_options(config, "all", 1).planner;
+  EXPECT_EQ(all.name(), PlannerConfig::from_preset("default").name());
+  PlannerConfig two = PlannerConfig::from_preset("default");
+  two.reuse = hrs::planning::ReuseOptions::none();
+  two.reuse.samples = two.reuse.steering = true;
+  const PlannerConfig ss = shared::design_options(config, "samples_steering", 1).planner;
+  EXPECT_EQ(ss.name(), two.name());
+  EXPECT_EQ(ss.reuse.names(), "samples,steering");
+  const PlannerConfig none = shared::design_options(config, "none", 1).planner;
+  EXPECT_TRUE(none.proposed);
+  EXPECT_EQ(none.reuse.names(), "none");
+  EXPECT_NE(none.name(), all.name());
+  EXPECT_THROW(shared::design_options(config, "fastest", 1), hrs::InputError);
+  config.iterations = -1;
+  EXPECT_THROW(shared::design_options(config, "all", 1), hrs::InputError);
 }
 
 }  // namespace
