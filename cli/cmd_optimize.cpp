@@ -255,7 +255,7 @@ std::filesystem::path design_dir(const DesignRequest& r, long d) {
 //! design was written as it stood, or (stopped before its first iteration)
 //! nothing was written for it.
 bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bool tty,
-                std::vector<std::string>& svgs) {
+                std::vector<optimize::Picture>& pictures) {
   // The same options as the Python module's design() (api/operations.h).
   optimize::DesignOptions options = r.options(d);
   const auto progress = progress_bar(
@@ -294,8 +294,8 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   std::string access_line;
   const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
   api::write_design_files(result, info, extras, dir);
-  svgs.push_back(
-      optimize::design_svg(result, api::design_title(result, options.seed)));
+  pictures.push_back(
+      optimize::design_picture(result, api::design_title(result, options.seed)));
   print_summary(dir, result);
   std::printf("%s: %s\n", dir.string().c_str(), access_line.c_str());
   return result.stopped || g_interrupted.load();
@@ -304,12 +304,12 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
 //! After the designs: the contact sheet of several, then the removal (with a
 //! note) of an earlier run's outputs beyond what this run wrote, which would
 //! sit beside the new contact sheet unnoticed.
-void finish_outputs(const DesignRequest& r, const std::vector<std::string>& svgs) {
+void finish_outputs(const DesignRequest& r, const std::vector<optimize::Picture>& pictures) {
   if (r.designs > 1) {
     io::write_files_atomic(
-        {{std::filesystem::path(r.out) / "contact_sheet.svg", optimize::contact_sheet_svg(svgs)}});
+        {{std::filesystem::path(r.out) / "contact_sheet.svg", optimize::contact_sheet_svg(pictures)}});
   }
-  const auto written = static_cast<long>(svgs.size());
+  const auto written = static_cast<long>(pictures.size());
   if (const int removed = remove_stale_outputs(r.out, r.designs > 1, written, false)) {
     std::fprintf(stderr, "hrspace design: removed %d stale output(s) of an earlier run in %s\n",
                  removed, r.out.c_str());
@@ -333,15 +333,15 @@ int cmd_design(const Argv& argv) {
   StopSignalHandlers handlers;
   handlers.install();
   const bool tty = isatty(STDERR_FILENO) != 0;
-  std::vector<std::string> svgs;
+  std::vector<optimize::Picture> pictures;
   bool interrupted = false;
   for (long d = 0; d < request.designs && !interrupted; ++d)
-    interrupted = run_design(request, scene, d, tty, svgs);
-  if (svgs.empty()) {  // interrupted before the first design: --out is left as it was
+    interrupted = run_design(request, scene, d, tty, pictures);
+  if (pictures.empty()) {  // interrupted before the first design: --out is left as it was
     handlers.restore();
     return stop_exit_status();
   }
-  finish_outputs(request, svgs);
+  finish_outputs(request, pictures);
   std::fflush(stdout);
   handlers.restore();
   return interrupted ? stop_exit_status() : 0;

@@ -73,8 +73,14 @@ class DesignRun {
     current_terms_ = model_.evaluate(poses_, round_.tours(), &round_.blockage());
     result_.initial = current_terms_;
     escape_.refresh_open_stops();
-    result_.unblock.separated = escape_.separate(poses_, options_.seed, valid_, move_);
+    // Validity comes first: separation may cover a stop (the unblocking
+    // and the annealing open it again).
+    const EscapePolicy::ValidFn fits = [this](const std::vector<Pose2>& p, int moved) {
+      return round_.fits(p, moved);
+    };
+    result_.unblock.separated = escape_.separate(poses_, options_.seed, fits, move_);
     if (result_.unblock.separated > 0) escape_.refresh_open_stops();
+    result_.unblock.left_invalid = layout_violation(round_.scene());
     if (escape_.unblock(poses_, options_.seed, stop_, valid_, move_, result_.unblock) ||
         result_.unblock.separated > 0) {
       plan_current();  // the annealing starts from the unblocked layout

@@ -118,6 +118,9 @@ struct DesignResult {
   struct Unblock {
     int walled_before = 0, walled_after = 0, proposals = 0, accepted = 0;
     int separated = 0;  //!< objects moved to make an invalid input layout valid
+    //! Why the layout was still not valid after the separation ("" when
+    //! it was valid, or was valid from the start).
+    std::string left_invalid;
   } unblock;
   //! Moves refused because they would leave a stop without any free goal
   //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.

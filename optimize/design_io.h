@@ -40,8 +40,18 @@ std::string report_document(const DesignResult& result, const RunInfo& info);
 //! elements in room coordinates, metres, y up) is drawn above the tours.
 std::string design_svg(const DesignResult& result, const std::string& title,
                        const std::string& overlay = {});
-//! One SVG showing several design.svg texts side by side (columns per row).
-std::string contact_sheet_svg(const std::vector<std::string>& svgs, int columns = 4);
+//! An SVG picture and its canvas size in pixels.
+struct Picture {
+  std::string svg;
+  double width = 0.0, height = 0.0;
+};
+//! design_svg() with the canvas size it drew on (from the room, not read
+//! back from the text).
+Picture design_picture(const DesignResult& result, const std::string& title,
+                       const std::string& overlay = {});
+//! One SVG showing several pictures side by side (columns per row), each
+//! in a cell as large as the largest.
+std::string contact_sheet_svg(const std::vector<Picture>& pictures, int columns = 4);
 //! Writes layout.json, tours.json, design.svg and report.json into `dir`
 //! (created if missing), all four through write_files_atomic, then
 //! manifest.json: the four names with their sizes and FNV-1a digests. The

@@ -219,6 +219,11 @@ void legend(std::ostringstream& s, const Canvas& canvas, const DesignResult& res
 
 std::string design_svg(const DesignResult& result, const std::string& title,
                        const std::string& overlay) {
+  return design_picture(result, title, overlay).svg;
+}
+
+Picture design_picture(const DesignResult& result, const std::string& title,
+                       const std::string& overlay) {
   const auto& scene = result.layout;
   const Canvas canvas = room_canvas(scene);
   const Frame& f = canvas.frame;
@@ -238,25 +243,19 @@ std::string design_svg(const DesignResult& result, const std::string& title,
   start_chair_layer(s, f, scene);
   legend(s, canvas, result);
   s << "</svg>\n";
-  return s.str();
+  return {s.str(), canvas.width, canvas.height};
 }
 
-std::string contact_sheet_svg(const std::vector<std::string>& svgs, int columns) {
-  auto attr = [](const std::string& svg, const std::string& name) {
-    const auto p = svg.find(name + "=\"");
-    if (p == std::string::npos) return 0.0;
-    return std::stod(svg.substr(p + name.size() + 2));
-  };
+std::string contact_sheet_svg(const std::vector<Picture>& pictures, int columns) {
   double cell_w = 0.0, cell_h = 0.0;
-  for (const auto& s : svgs)
-    cell_w = std::max(cell_w, attr(s, "width")), cell_h = std::max(cell_h, attr(s, "height"));
-  columns = std::max(1, std::min(columns, static_cast<int>(svgs.size())));
-  const int rows = (static_cast<int>(svgs.size()) + columns - 1) / columns;
+  for (const Picture& p : pictures) cell_w = std::max(cell_w, p.width), cell_h = std::max(cell_h, p.height);
+  columns = std::max(1, std::min(columns, static_cast<int>(pictures.size())));
+  const int rows = (static_cast<int>(pictures.size()) + columns - 1) / columns;
   std::ostringstream out;
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(columns * cell_w)
       << "\" height=\"" << num(rows * cell_h) << "\">\n";
-  for (std::size_t i = 0; i < svgs.size(); ++i) {
-    std::string s = svgs[i];
+  for (std::size_t i = 0; i < pictures.size(); ++i) {
+    std::string s = pictures[i].svg;
     const auto pos = s.find("<svg ");
     if (pos == std::string::npos) continue;
     s.replace(pos, 5,

@@ -13,18 +13,22 @@
 
 namespace hrs::optimize {
 
+using geometry::Vec2;
+
 int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
                            const PlaceFn& place) {
   static constexpr int kSeparateDraws = 500;
+  static constexpr int kSeparatePasses = 6;
   if (!escape_ || layout_violation(round_.scene()).empty()) return 0;
   std::mt19937_64 rng(splitmix64(seed ^ 0x7365'7061'7261'7465ULL));
   const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
   int moved = 0;
-  for (int pass = 0; pass < 3 && !layout_violation(round_.scene()).empty(); ++pass) {
+  for (int pass = 0; pass < kSeparatePasses && !layout_violation(round_.scene()).empty(); ++pass) {
     for (std::size_t i = 0; i < poses.size(); ++i) {
       const int o = static_cast<int>(i);
       if (!movable_[i] || object_violation(round_.scene(), o).empty()) continue;
-      for (int draw = 0; draw < kSeparateDraws; ++draw) {
+      std::optional<Pose2> found;
+      for (int draw = 0; draw < kSeparateDraws && !found; ++draw) {
         Pose2 to = poses[i];
         to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
         to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
@@ -32,15 +36,82 @@ int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const 
                                                        (std::numbers::pi / 2));
         std::vector<Pose2> p = poses;
         p[i] = to;
-        if (!valid(p, o)) continue;
-        place(o, to);
-        poses[i] = to;
-        ++moved;
-        break;
+        if (valid(p, o)) found = to;
       }
+      // In a crowded room a uniform draw seldom lands on a free spot: scan.
+      if (!found) found = nearest_free_pose(o, poses, box, valid);
+      // No spot is free: take the nearest spot that smaller movable objects
+      // hold; they are separated in turn (smaller objects fit more easily).
+      if (!found) found = displacing_pose(o, poses, box);
+      if (!found) continue;
+      place(o, *found);
+      poses[i] = *found;
+      ++moved;
     }
   }
   return moved;
+}
+
+namespace {
+
+//! The pose of `now`'s object nearest `now` that `ok` accepts: positions
+//! `step` apart over `box`, nearest first (ties in scan order, so the answer
+//! is one function of the layout), each at `now`'s heading and its three
+//! quarter turns.
+std::optional<Pose2> nearest_pose(const Pose2& now, const geometry::Box& box, double step,
+                                  const std::function<bool(const Pose2&)>& ok) {
+  const int nx = static_cast<int>(std::floor((box.xmax - box.xmin) / step)) + 1;
+  const int ny = static_cast<int>(std::floor((box.ymax - box.ymin) / step)) + 1;
+  std::vector<std::pair<double, Vec2>> spots;
+  spots.reserve(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+  for (int ix = 0; ix < nx; ++ix)
+    for (int iy = 0; iy < ny; ++iy) {
+      const Vec2 c{box.xmin + ix * step, box.ymin + iy * step};
+      spots.emplace_back(std::hypot(c.x - now.x, c.y - now.y), c);
+    }
+  std::stable_sort(spots.begin(), spots.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [d, c] : spots)
+    for (int quarter = 0; quarter < 4; ++quarter) {
+      const Pose2 to{c.x, c.y, geometry::wrap_angle(now.theta + quarter * (std::numbers::pi / 2))};
+      if (ok(to)) return to;
+    }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<Pose2> EscapePolicy::nearest_free_pose(int o, const std::vector<Pose2>& poses,
+                                                     const geometry::Box& box,
+                                                     const ValidFn& valid) {
+  std::vector<Pose2> p = poses;
+  return nearest_pose(poses[static_cast<std::size_t>(o)], box, 0.1, [&](const Pose2& to) {
+    p[static_cast<std::size_t>(o)] = to;
+    return valid(p, o);
+  });
+}
+
+std::optional<Pose2> EscapePolicy::displacing_pose(int o, const std::vector<Pose2>& poses,
+                                                   const geometry::Box& box) {
+  const auto area = [](const geometry::Object& x) {
+    return std::abs(geometry::signed_area(x.footprint));
+  };
+  geometry::Scene larger = round_.scene();
+  larger.objects.clear();
+  int at = -1;
+  for (std::size_t j = 0; j < poses.size(); ++j) {
+    geometry::Object x = round_.scene().objects[j];
+    x.pose = poses[j];
+    const bool self = static_cast<int>(j) == o;
+    if (!self && movable_[j] && area(x) < area(round_.scene().objects[static_cast<std::size_t>(o)]))
+      continue;
+    if (self) at = static_cast<int>(larger.objects.size());
+    larger.objects.push_back(std::move(x));
+  }
+  return nearest_pose(poses[static_cast<std::size_t>(o)], box, 0.2, [&](const Pose2& to) {
+    larger.objects[static_cast<std::size_t>(at)].pose = to;
+    return object_violation(larger, at).empty();
+  });
 }
 
 EscapePolicy::EscapePolicy(const geometry::Scene& scene, TourRound& round,

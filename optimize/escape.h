@@ -51,10 +51,25 @@ class EscapePolicy {
   //! door's clear zone or the walls) is separated first: each movable object
   //! in violation, in index order, jumps to a uniform position in the room's
   //! box with its heading or a quarter turn of it, redrawn until `valid`
-  //! (at most kSeparateDraws draws), for up to three passes. Returns the
+  //! (at most kSeparateDraws draws) or, when no draw is valid (a crowded
+  //! room), to nearest_free_pose or, when no spot is free, to
+  //! displacing_pose (the smaller objects it lands on are separated in
+  //! turn), for up to kSeparatePasses passes. `valid` decides what is free
+  //! (the design loop passes the exact layout checks alone). Returns the
   //! objects moved; 0 when the layout was valid or escape is off.
   int separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
                const PlaceFn& place);
+  //! The valid pose of object `o` nearest its place in `poses`: positions
+  //! on a 10 cm grid over `box`, nearest first, each at the object's
+  //! heading and its three quarter turns. nullopt when none is valid.
+  std::optional<Pose2> nearest_free_pose(int o, const std::vector<Pose2>& poses,
+                                         const geometry::Box& box, const ValidFn& valid);
+  //! The pose of object `o` nearest its place in `poses` (a 20 cm grid over
+  //! `box`, the same headings) that is valid among the fixed objects and
+  //! the movable ones at least as large as it: smaller ones may overlap it
+  //! there. nullopt when there is none.
+  std::optional<Pose2> displacing_pose(int o, const std::vector<Pose2>& poses,
+                                       const geometry::Box& box);
   //! The annealer's focus for the current layout (empty without escape).
   std::vector<int> walling_objects();
   int covering_moves() const { return covering_moves_; }

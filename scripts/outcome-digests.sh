@@ -13,7 +13,10 @@
 # that make the same designs print the same lines.
 #
 # Usage: scripts/outcome-digests.sh [--iterations N] [--planners 'P1 P2'] [--bin HRSPACE]
+#                                    [--drop-keys 'K1 K2']
 #   defaults: 150 iterations, planners "baseline default", build/cli/hrspace.
+#   --drop-keys: report.json keys left out as well (at any depth), for a
+#   step that adds a report field and otherwise keeps behaviour.
 # Compare two commits: run it at each (building in between) and diff:
 #   scripts/outcome-digests.sh > /tmp/a; git checkout B; scripts/build.sh hrspace
 #   scripts/outcome-digests.sh > /tmp/b; diff /tmp/a /tmp/b && echo equal
@@ -22,12 +25,14 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 iterations=150
 planners="baseline default"
 bin="$root/build/cli/hrspace"
+drop=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --iterations) iterations="$2"; shift 2 ;;
     --planners) planners="$2"; shift 2 ;;
     --bin) bin="$2"; shift 2 ;;
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --drop-keys) drop="$2"; shift 2 ;;
+    -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "outcome-digests: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -40,13 +45,14 @@ for scene in "$root"/scenes/*.json; do
     out="$work/$name-$planner"
     "$bin" design "$scene" --out "$out" --seed 1 --iterations "$iterations" --threads 2 \
       --planner "$planner" >/dev/null
-    digest="$(python3 - "$out" <<'EOF'
+    digest="$(python3 - "$out" "$drop" <<'EOF'
 import hashlib, json, sys, pathlib
 d = pathlib.Path(sys.argv[1])
+dropped = set(sys.argv[2].split())
 def strip(v):
     if isinstance(v, dict):
         return {k: strip(x) for k, x in v.items()
-                if not (k.endswith("_s") or k.endswith("_ms") or k in ("threads", "version", "commit", "planner", "reachability_fills"))}
+                if not (k.endswith("_s") or k.endswith("_ms") or k in ("threads", "version", "commit", "planner", "reachability_fills") or k in dropped)}
     if isinstance(v, list):
         return [strip(x) for x in v]
     return v

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -240,6 +241,89 @@ TEST(Design, InvalidStartingLayoutIsSeparatedOrReportedInvalid) {
   const auto plain = design(scene, options);
   EXPECT_EQ(plain.unblock.separated, 0);
   if (!plain.valid) EXPECT_NE(layout_violation(plain.layout), "");
+}
+
+TEST(Design, CrowdedInvalidLayoutIsSeparatedByDisplacingSmallerObjects) {
+  // The bedroom strewn with small boxes on a lattice 1.1 m apart: no spot of
+  // the room holds the bed (checked below by brute force at 5 cm and every
+  // quarter turn), and the bed starts on the fixed closet. Separating it
+  // needs boxes moved out of its way: the bed takes a spot the boxes hold,
+  // then they find spots of their own.
+  Scene scene = geometry::load_scene(kBedroom);
+  const int bed = scene.find_object("bed");
+  int boxes = 0;
+  for (double x = 0.3; x < 4.5; x += 1.1)
+    for (double y = 0.3; y < 4.0; y += 1.1) {
+      geometry::Object box;
+      box.id = "box_" + std::to_string(boxes);
+      box.footprint = {{-0.175, -0.175}, {0.175, -0.175}, {0.175, 0.175}, {-0.175, 0.175}};
+      box.pose = {x, y, 0.0};
+      scene.objects.push_back(box);
+      const int k = static_cast<int>(scene.objects.size()) - 1;
+      // Keep the boxes that are valid among the others without the bed.
+      Scene probe = scene;
+      probe.objects.erase(probe.objects.begin() + bed);
+      if (object_violation(probe, k - 1).empty())
+        ++boxes;
+      else
+        scene.objects.pop_back();
+    }
+  ASSERT_GE(boxes, 10);
+  scene.objects[bed].pose = {1.2, 2.6, 0.0};
+  ASSERT_NE(object_violation(scene, bed).find("closet"), std::string::npos)
+      << object_violation(scene, bed);
+  {
+    Scene probe = scene;
+    int free_spots = 0;
+    for (double x = 0.0; x <= 4.5; x += 0.05)
+      for (double y = 0.0; y <= 4.0; y += 0.05)
+        for (int q = 0; q < 4; ++q) {
+          probe.objects[bed].pose = {x, y, q * std::numbers::pi / 2};
+          free_spots += object_violation(probe, bed).empty() ? 1 : 0;
+        }
+    ASSERT_EQ(free_spots, 0) << "the lattice leaves the bed a spot";
+  }
+  DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("default");
+  options.iterations = 10;
+  const auto r = design(scene, options);
+  EXPECT_GE(r.unblock.separated, 2);
+  EXPECT_EQ(r.unblock.left_invalid, "");  // valid before the annealing
+  EXPECT_TRUE(r.valid);
+  EXPECT_EQ(layout_violation(r.layout), "");
+  for (std::size_t i = 0; i < r.layout.objects.size(); ++i)
+    EXPECT_EQ(object_violation(r.layout, static_cast<int>(i)), "") << r.layout.objects[i].id;
+}
+
+TEST(Design, ContactSheetCellsAreSizedFromTheDrawnCanvases) {
+  // Two rooms of different sizes: the picture's size is the room's canvas
+  // (design_picture), and the sheet's cells are as large as the largest.
+  DesignResult small, large;
+  small.layout = geometry::load_scene(kBedroom);
+  large.layout = small.layout;
+  for (auto& v : large.layout.room.polygon) v = {2.0 * v.x, 1.5 * v.y};
+  const Picture a = design_picture(small, "a"), b = design_picture(large, "b");
+  EXPECT_EQ(a.svg, design_svg(small, "a"));
+  // Width grows by the room's extra 4.5 m, height by its extra 2 m, at
+  // one scale: the canvases differ by exactly that.
+  ASSERT_GT(a.width, 0.0);
+  EXPECT_NEAR((b.width - a.width) / 4.5, (b.height - a.height) / 2.0, 1e-9);
+  const std::string sheet = contact_sheet_svg({a, b, a}, 2);
+  const auto attr = [&](std::size_t from, const std::string& name) {
+    const auto p = sheet.find(name + "=\"", from);
+    return std::stod(sheet.substr(p + name.size() + 2));
+  };
+  EXPECT_NEAR(attr(0, "width"), 2 * b.width, 0.01);
+  EXPECT_NEAR(attr(0, "height"), 2 * b.height, 0.01);
+  // The second picture sits one cell right; the third starts the second
+  // row, one cell down.
+  std::vector<std::size_t> at{0};
+  for (int k = 0; k < 3; ++k) at.push_back(sheet.find("<svg x=", at.back() + 1));
+  ASSERT_NE(at[3], std::string::npos);
+  EXPECT_NEAR(attr(at[2], "x"), b.width, 0.01);
+  EXPECT_NEAR(attr(at[2], "y"), 0.0, 0.01);
+  EXPECT_NEAR(attr(at[3], "x"), 0.0, 0.01);
+  EXPECT_NEAR(attr(at[3], "y"), b.height, 0.01);
 }
 
 TEST(Design, StopFlagEndsTheRunAndKeepsTheBest) {
