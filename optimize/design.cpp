@@ -339,7 +339,7 @@ class DesignRun {
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
     static_cast<PolishResult&>(result_.polish) = pr;
-    if (!result_.arrange.kept && pr.kept == 0 && pr.squared == 0) return;
+    if (!result_.arrange.kept && pr.kept == 0 && pr.squared == 0 && pr.turned == 0) return;
     for (std::size_t i = 0; i < poses.size(); ++i) result_.layout.objects[i].pose = poses[i];
     result_.final = terms;
     result_.valid = layout_violation(result_.layout).empty();

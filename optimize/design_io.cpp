@@ -156,6 +156,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
            {{"tried", result.polish.tried},
             {"kept", result.polish.kept},
             {"slid", result.polish.slid},
+            {"turned", result.polish.turned},
             {"squared", result.polish.squared},
             {"tours_found_before", result.polish.tours_found_before},
             {"preferences_met_before", result.polish.met_before}}},

@@ -182,6 +182,45 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       }
     }
   }
+  // Groups linked by relation angles turn as one body (a bed, the TV that
+  // faces it and the chair beside it): one object at a time cannot meet a
+  // relation without breaking another of the group.
+  for (const std::vector<int>& group : heading_groups(scene)) {
+    const auto unmet = [&] {
+      return std::any_of(report.checks.begin(), report.checks.end(), [&](const PreferenceCheck& c) {
+        if (c.met || c.kind != "relation_angle") return false;
+        const int a = scene.find_object(c.object);
+        return std::find(group.begin(), group.end(), a) != group.end();
+      });
+    };
+    for (GroupMove move : group_turns(scene, model, poses, movable, group)) {
+      if (!unmet() || out.tried >= max_tries || (stop && stop->load())) break;
+      std::vector<geometry::Pose2> q = poses;
+      for (const auto& [k, pose] : move) q[static_cast<std::size_t>(k)] = pose;
+      // A wall object whose spot across is taken slides along the walls
+      // that give it the same heading, nearest first, to the first valid
+      // place.
+      for (auto& [k, pose] : move) {
+        const geometry::Object& o = scene.objects[static_cast<std::size_t>(k)];
+        if (!o.wall || !o.wall->distance || hooks.valid(q, k)) continue;
+        for (const geometry::Pose2& at : wall_slides(scene, model, q, k, kSlideStep)) {
+          if (std::abs(geometry::wrap_angle(at.theta - pose.theta)) > 1e-9) continue;
+          q[static_cast<std::size_t>(k)] = at;
+          if (hooks.valid(q, k)) {
+            pose = at;
+            break;
+          }
+          q[static_cast<std::size_t>(k)] = pose;
+        }
+      }
+      if (!std::all_of(move.begin(), move.end(), [&](const auto& m) { return hooks.valid(q, m.first); }))
+        continue;
+      PreferenceReport next = check_preferences(scene, model, q);
+      if (score(next) <= score(report)) continue;
+      ++out.tried;
+      if (try_moves(move, next)) ++out.turned;
+    }
+  }
   // Square to the room: an object whose heading no preference fixes is
   // turned to the nearest heading parallel or perpendicular to its nearest
   // wall (a lamp at 10° looks wrong to a designer), when the layout stays

@@ -9,6 +9,10 @@
 // is valid, every tour found before is still found (the tours are planned
 // again) and the preference score rises: preferences met, less one for
 // each angle preference more than 20° off.
+// Then each group of objects linked by relation angles (heading_groups) with
+// an unmet relation angle is tried turned as one body (group_turns; a wall
+// object whose spot is taken slides along the walls that give it the same
+// heading), on the same conditions.
 // Last, each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered).
 // The order is fixed (objects ascending, candidates in preferred_poses
@@ -44,6 +48,7 @@ struct PolishResult {
   int tried = 0;  //!< poses planned
   int kept = 0;   //!< poses kept that meet more preferences
   int slid = 0;     //!< of `kept`, poses found sliding along a wall
+  int turned = 0;   //!< heading groups turned as one body (group_turns)
   int squared = 0;  //!< objects turned square to their wall (no heading preference)
 };
 

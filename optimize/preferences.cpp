@@ -225,6 +225,97 @@ std::vector<Pose2> wall_slides(const geometry::Scene& scene, const CostModel& mo
   return out;
 }
 
+std::vector<std::vector<int>> heading_groups(const geometry::Scene& scene) {
+  const int n = static_cast<int>(scene.objects.size());
+  std::vector<int> parent(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) parent[static_cast<std::size_t>(i)] = i;
+  const auto root = [&](int i) {
+    while (parent[static_cast<std::size_t>(i)] != i) i = parent[static_cast<std::size_t>(i)];
+    return i;
+  };
+  for (const geometry::Relation& r : scene.relations) {
+    const int a = scene.find_object(r.a), b = scene.find_object(r.b);
+    if (a < 0 || b < 0 || !r.angle || a == b) continue;
+    const int ra = root(a), rb = root(b);
+    if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
+  }
+  std::vector<std::vector<int>> groups(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) groups[static_cast<std::size_t>(root(i))].push_back(i);
+  std::vector<std::vector<int>> out;
+  for (auto& g : groups)
+    if (g.size() >= 2) out.push_back(std::move(g));
+  return out;
+}
+
+std::vector<GroupMove> group_turns(const geometry::Scene& scene, const CostModel& model,
+                                   const std::vector<Pose2>& poses, const std::vector<bool>& movable,
+                                   const std::vector<int>& group) {
+  // offset[m]: the member's heading minus the group's first one, along a
+  // spanning tree (relation: theta_a − theta_b = angle).
+  std::vector<std::optional<double>> offset(scene.objects.size());
+  offset[static_cast<std::size_t>(group.front())] = 0.0;
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const geometry::Relation& r : scene.relations) {
+      const int a = scene.find_object(r.a), b = scene.find_object(r.b);
+      if (a < 0 || b < 0 || !r.angle) continue;
+      auto &oa = offset[static_cast<std::size_t>(a)], &ob = offset[static_cast<std::size_t>(b)];
+      if (oa && !ob) ob = *oa - *r.angle, grew = true;
+      if (ob && !oa) oa = *ob + *r.angle, grew = true;
+    }
+  }
+  const auto wall_heading = [&](int m, int edge) {
+    return model.wall_normal_angle(edge) + *scene.objects[static_cast<std::size_t>(m)].wall->angle;
+  };
+  std::vector<double> rotations;
+  for (const int m : group) {
+    const geometry::Object& o = scene.objects[static_cast<std::size_t>(m)];
+    const Pose2 p = pose_of(poses, m);
+    const double anchor = movable[static_cast<std::size_t>(m)] && o.wall && o.wall->angle
+                              ? wall_heading(m, model.nearest_wall(m, p))
+                              : p.theta;
+    const double phi = geometry::wrap_angle(anchor - *offset[static_cast<std::size_t>(m)]);
+    if (std::none_of(rotations.begin(), rotations.end(), [&](double x) {
+          return std::abs(geometry::wrap_angle(x - phi)) < 1e-9;
+        }))
+      rotations.push_back(phi);
+  }
+  std::vector<GroupMove> out;
+  const int edges = static_cast<int>(scene.room.polygon.size());
+  for (const double phi : rotations) {
+    GroupMove move;
+    bool ok = true;
+    for (const int m : group) {
+      if (!movable[static_cast<std::size_t>(m)]) continue;
+      const geometry::Object& o = scene.objects[static_cast<std::size_t>(m)];
+      const Pose2 now = pose_of(poses, m);
+      const double h = geometry::wrap_angle(phi + *offset[static_cast<std::size_t>(m)]);
+      if (std::abs(geometry::wrap_angle(h - now.theta)) < 1e-9) continue;
+      if (o.wall && o.wall->angle && o.wall->distance) {
+        // The wall whose normal gives the heading; nearest the position.
+        std::optional<Pose2> best;
+        double best_d = std::numeric_limits<double>::infinity();
+        for (int e = 0; e < edges; ++e) {
+          if (std::abs(geometry::wrap_angle(wall_heading(m, e) - h)) > 1e-6) continue;
+          const auto at = against_edge(scene, o, e, h, *o.wall->distance, now.position());
+          if (!at) continue;
+          const double d = geometry::norm(at->position() - now.position());
+          if (d < best_d) best_d = d, best = at;
+        }
+        if (!best) {
+          ok = false;
+          break;
+        }
+        move.emplace_back(m, *best);
+      } else {
+        move.emplace_back(m, Pose2{now.x, now.y, h});
+      }
+    }
+    if (ok && !move.empty()) out.push_back(std::move(move));
+  }
+  return out;
+}
+
 std::optional<Pose2> wall_slot(const geometry::Scene& scene, int object, std::mt19937_64& rng) {
   const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
   if (!o.wall || !o.wall->distance) return std::nullopt;

@@ -84,6 +84,28 @@ std::vector<geometry::Pose2> wall_slides(const geometry::Scene& scene, const Cos
                                          const std::vector<geometry::Pose2>& poses, int object,
                                          double step);
 
+//! The groups of objects linked by relation angles (connected through
+//! relations with an `angle`), each ascending, groups by their first
+//! object; only groups with at least two objects.
+std::vector<std::vector<int>> heading_groups(const geometry::Scene& scene);
+
+//! One move of several objects: (object, pose) pairs.
+using GroupMove = std::vector<std::pair<int, geometry::Pose2>>;
+
+//! Turns of heading group `group` (heading_groups()) as one body, so that
+//! its relation angles hold along a spanning tree (BFS from its first
+//! object): relation angles fix the group's headings up to one common
+//! rotation, drawn from each member's anchor — a fixed object's heading, a
+//! wall-angle object's heading against its nearest wall, or a free object's
+//! own heading. Movable members turn in place, except those with a wall
+//! distance and angle: they go against the wall whose normal gives them the
+//! wanted heading, nearest their position (none such: that rotation is
+//! skipped). One move per distinct rotation that changes some pose, in
+//! member order; not checked for validity.
+std::vector<GroupMove> group_turns(const geometry::Scene& scene, const CostModel& model,
+                                   const std::vector<geometry::Pose2>& poses,
+                                   const std::vector<bool>& movable, const std::vector<int>& group);
+
 //! One pose of `object` against a wall drawn at random (when it has a wall
 //! preference; its heading and distance as wanted, its place along the wall
 //! uniform): a "wall slot" move. nullopt when the object has none.

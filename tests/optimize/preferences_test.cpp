@@ -187,6 +187,78 @@ TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
   EXPECT_GT(slides_checked, 5000);  // slides that reached the check
 }
 
+TEST(Preferences, GroupTurnsMeetEveryRelationAngleOfAConsistentGroup) {
+  // Random groups of 2-5 objects linked by relation angles taken from
+  // hidden headings (a random tree, sometimes one more edge closing a
+  // cycle: consistent by construction), turned at random. Some turn of the
+  // group meets every relation angle without moving a free object, and
+  // every turn puts a wall object against a wall at its wanted heading.
+  std::mt19937_64 rng(3535);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int cases = 0, walled = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const int n = 2 + static_cast<int>(u(rng) * 4);
+    const bool wall = u(rng) < 0.5;  // object 0 wants its back to a wall
+    std::vector<double> hidden;
+    std::string objects, relations;
+    for (int i = 0; i < n; ++i) {
+      hidden.push_back(wall && i == 0 ? kPi / 2 * std::floor(4 * u(rng)) : 2 * kPi * u(rng) - kPi);
+      const double x = 1.0 + 1.5 * i, y = 2.0 + 1.5 * (i % 2);
+      objects += std::string(i ? "," : "") + R"({"id": "o)" + std::to_string(i) +
+                 R"(", "size": [0.4, 0.6], "pose": [)" + std::to_string(x) + "," +
+                 std::to_string(y) + "," + std::to_string(2 * kPi * u(rng) - kPi) + "]" +
+                 (wall && i == 0 ? R"(, "wall": {"distance": 0.0, "angle": 0.0})" : "") + "}";
+    }
+    auto relate = [&](int a, int b) {
+      relations += std::string(relations.empty() ? "" : ",") + R"({"a": "o)" + std::to_string(a) +
+                   R"(", "b": "o)" + std::to_string(b) + R"(", "angle": )" +
+                   std::to_string(geometry::wrap_angle(hidden[a] - hidden[b])) + "}";
+    };
+    for (int i = 1; i < n; ++i) relate(i, static_cast<int>(u(rng) * i));
+    if (n >= 3 && u(rng) < 0.5) relate(0, n - 1);
+    const std::string text = R"({"format": "hrspace-scene/1", "name": "g",
+      "room": {"size": [9, 5]},
+      "door": {"center": [8.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+      "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+      "objects": [)" + objects + R"(], "relations": [)" + relations + R"(],
+      "activity": {"transitions": {"door": {"o0": 1.0}, "o0": {"o1": 1.0}, "o1": {"o0": 1.0}},
+                   "sequences": 2, "visits": 2}})";
+    const Scene s = geometry::parse_scene(text, "group");
+    const CostModel model(s, scene_sequences(s));
+    const std::vector<Pose2> p = poses_of(s);
+    const std::vector<bool> movable(s.objects.size(), true);
+    const auto groups = heading_groups(s);
+    ASSERT_EQ(groups.size(), 1u);
+    ASSERT_EQ(groups[0].size(), static_cast<std::size_t>(n));
+    bool all_met = false;
+    for (const GroupMove& move : group_turns(s, model, p, movable, groups[0])) {
+      std::vector<Pose2> q = p;
+      for (const auto& [k, pose] : move) {
+        q[static_cast<std::size_t>(k)] = pose;
+        if (k == 0 && wall) {
+          // Against a wall at its wanted heading (the wall's normal).
+          bool on_some_wall = false;
+          for (int e = 0; e < 4; ++e)
+            on_some_wall |= std::abs(geometry::wrap_angle(pose.theta - model.wall_normal_angle(e))) < 1e-9;
+          EXPECT_TRUE(on_some_wall) << "trial " << trial;
+          ++walled;
+        } else {
+          EXPECT_EQ(pose.position().x, p[static_cast<std::size_t>(k)].x);
+          EXPECT_EQ(pose.position().y, p[static_cast<std::size_t>(k)].y);
+        }
+      }
+      bool met = true;
+      for (const PreferenceCheck& c : check_preferences(s, model, q).checks)
+        if (c.kind == "relation_angle") met &= c.residual < 1e-5;  // angles written to 1e-6
+      all_met |= met;
+    }
+    EXPECT_TRUE(all_met) << "trial " << trial << ": " << relations;
+    ++cases;
+  }
+  EXPECT_EQ(cases, 2000);
+  EXPECT_GT(walled, 500);
+}
+
 TEST(Preferences, PreferenceMovesNeverLeaveTheLayoutInvalid) {
   for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
     const Scene scene = geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
