@@ -314,11 +314,28 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
 //! of it wherever they are. Otherwise (the grid joins
 //! everything, the car still fails: a turn too tight, a gap the grid's
 //! margin lets through): the movable stops where unfound tours broke off
-//! and the movable objects within kFocusReach of their goal poses.
+//! and the movable objects within kFocusReach of their goal poses, and
+//! when every unfound tour breaks off leaving the door, the movable objects
+//! within 2 m of the door's clear zone.
 std::vector<int> EscapePolicy::walling_objects() {
   if (!escape_) return {};
   const std::vector<int> walled = round_.walled_stops();
-  if (walled.empty()) return focus_for(round_.failing_stops(), false);
+  if (walled.empty()) {
+    std::vector<int> out = focus_for(round_.failing_stops(), false);
+    // Every unfound tour breaks off leaving the door: the objects near the
+    // door's clear zone box the car's first turn in.
+    if (round_.fails_leaving_the_door()) {
+      static constexpr double kDoorReach = 2.0;  // metres, as kFocusReach
+      const geometry::Polygon zone = geometry::door_clear_zone(scene_);
+      for (int i = 0; i < static_cast<int>(movable_.size()); ++i)
+        if (movable_[i] && std::find(out.begin(), out.end(), i) == out.end() &&
+            geometry::polygon_distance(geometry::world_footprint(round_.scene().objects[i]), zone) <=
+                kDoorReach)
+          out.push_back(i);
+      std::sort(out.begin(), out.end());
+    }
+    return out;
+  }
   std::vector<int> out = focus_for(walled, true);
   // A stop without a single free goal pose is covered where it stands,
   // however far the door's region reaches: it and its neighbours join

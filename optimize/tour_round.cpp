@@ -71,6 +71,16 @@ std::vector<int> TourRound::failing_stops() {
   return out;
 }
 
+bool TourRound::fails_leaving_the_door() const {
+  bool unfound = false;
+  for (const planning::Tour& t : tours_) {
+    if (t.found) continue;
+    if (t.stats.depth > 0) return false;
+    unfound = true;
+  }
+  return unfound;
+}
+
 std::vector<planning::GoalPose> TourRound::goals_of(int index) const {
   return planners_.front()->goals_for(work_.objects[index].id);
 }

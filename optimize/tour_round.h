@@ -85,6 +85,9 @@ class TourRound {
   //! The stops where this round's unfound tours broke off (the target of
   //! the first leg not joined), index order.
   std::vector<int> failing_stops();
+  //! True when this round has unfound tours and every one of them broke
+  //! off at its first leg, the one that leaves the door.
+  bool fails_leaving_the_door() const;
   //! Moves object `o` to `to` in the working scene and the C-space.
   void move(int o, const Pose2& to);
   //! Moves object `o` in the working scene only (a chain that checks moves

@@ -13,7 +13,9 @@
 //   is opened up by a 700-iteration baseline design, and a stop whose
 //   every goal pose is covered (the narrow passage's bookshelf behind the
 //   bed) is moved out, and no object that can be approached loses its
-//   last free goal pose;
+//   last free goal pose; a crowded generated room whose door boxes the
+//   car's first turn in (every tour fails leaving the door while the free
+//   grid joins everything) is opened by focusing on the door's neighbours;
 // - the clearance weight: a large weight on the path clearance term widens
 //   the tours' corridors (printed for docs/optimize.md);
 // - the rescue: with an RRT cut to 3 iterations (it finds only legs whose
@@ -233,6 +235,34 @@ TEST(DesignLoop, AStopWithNoFreeGoalPoseIsMovedOut) {
               r.final.tours_total, r.final.total());
   EXPECT_TRUE(r.valid);
   EXPECT_EQ(r.final.tours_found, r.final.tours_total);
+  EXPECT_TRUE(layout_violation(r.layout).empty()) << layout_violation(r.layout);
+}
+
+TEST(DesignLoop, ACrowdedDoorIsCleared) {
+  // A generated room (`hrspace generate --seed 7`, room 1: an L of 33
+  // objects, scrambled into an overlapping layout). Once separated, the free
+  // grid joins every stop to the door (no stop walled off), yet the car
+  // finds no tour: the objects by the door box its first turn in, and the
+  // focus on the stops where tours broke off never moved them. When every
+  // unfound tour breaks off on the leg that leaves the door, the objects
+  // within 2 m of the door's clear zone join the focus (`hrspace design
+  // tests/optimize/zoo_7_1.json --seed 1 --threads 2`: 0/10 before).
+  const Scene scene =
+      geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/tests/optimize/zoo_7_1.json");
+  DesignOptions o = options(1, 700);
+  o.planner = hrs::optimize::PlannerConfig::from_preset("default");
+  const DesignResult r = design(scene, o);
+  std::printf("zoo_7_1 seed 1: tours %d/%d -> %d/%d, separated %d\n", r.initial.tours_found,
+              r.initial.tours_total, r.final.tours_found, r.final.tours_total,
+              r.unblock.separated);
+  // The situation: no tour in the input, an invalid input made valid, then
+  // no stop walled off in the grid.
+  EXPECT_EQ(r.initial.tours_found, 0);
+  EXPECT_GT(r.unblock.separated, 0);
+  EXPECT_EQ(r.unblock.left_invalid, "");
+  EXPECT_EQ(r.unblock.walled_after, 0);
+  EXPECT_TRUE(r.valid);
+  EXPECT_GE(r.final.tours_found, 9);
   EXPECT_TRUE(layout_violation(r.layout).empty()) << layout_violation(r.layout);
 }
 
