@@ -28,13 +28,13 @@ int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const 
       const int o = static_cast<int>(i);
       if (!movable_[i] || object_violation(round_.scene(), o).empty()) continue;
       std::optional<Pose2> found;
+      std::vector<Pose2> p = poses;
       for (int draw = 0; draw < kSeparateDraws && !found; ++draw) {
         Pose2 to = poses[i];
         to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
         to.y = box.ymin + uniform01(rng) * (box.ymax - box.ymin);
         to.theta = geometry::wrap_angle(to.theta + std::floor(uniform01(rng) * 4.0) *
                                                        (std::numbers::pi / 2));
-        std::vector<Pose2> p = poses;
         p[i] = to;
         if (valid(p, o)) found = to;
       }
@@ -281,7 +281,6 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
 //! The movable objects near `stops` (see walling_objects()); `in_grid`:
 //! only those bordering the door's reachable region.
 std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_grid) {
-  static constexpr double kFocusReach = 2.0;  // metres
   std::vector<int> out;
   if (stops.empty()) return out;
   // The stops' footprints: a stop whose goal poses are all covered (by
@@ -316,7 +315,7 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
 //! margin lets through): the movable stops where unfound tours broke off
 //! and the movable objects within kFocusReach of their goal poses, and
 //! when every unfound tour breaks off leaving the door, the movable objects
-//! within 2 m of the door's clear zone.
+//! within kFocusReach of the door's clear zone.
 std::vector<int> EscapePolicy::walling_objects() {
   if (!escape_) return {};
   const std::vector<int> walled = round_.walled_stops();
@@ -325,12 +324,11 @@ std::vector<int> EscapePolicy::walling_objects() {
     // Every unfound tour breaks off leaving the door: the objects near the
     // door's clear zone box the car's first turn in.
     if (round_.fails_leaving_the_door()) {
-      static constexpr double kDoorReach = 2.0;  // metres, as kFocusReach
       const geometry::Polygon zone = geometry::door_clear_zone(scene_);
       for (int i = 0; i < static_cast<int>(movable_.size()); ++i)
         if (movable_[i] && std::find(out.begin(), out.end(), i) == out.end() &&
             geometry::polygon_distance(geometry::world_footprint(round_.scene().objects[i]), zone) <=
-                kDoorReach)
+                kFocusReach)
           out.push_back(i);
       std::sort(out.begin(), out.end());
     }

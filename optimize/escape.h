@@ -75,6 +75,9 @@ class EscapePolicy {
   int covering_moves() const { return covering_moves_; }
 
  private:
+  //! How far from a stop (or the door's clear zone) an object joins the
+  //! focus, metres.
+  static constexpr double kFocusReach = 2.0;
   std::vector<int> stop_objects() const;
   std::vector<int> walled_off(const std::vector<int>& stops, double& total);
   std::optional<Pose2> unblock_move(int o, const std::vector<Pose2>& poses,
