@@ -78,7 +78,8 @@ class DesignRun {
     const EscapePolicy::ValidFn fits = [this](const std::vector<Pose2>& p, int moved) {
       return round_.fits(p, moved);
     };
-    result_.unblock.separated = escape_.separate(poses_, options_.seed, fits, move_);
+    result_.unblock.separated = escape_.separate(poses_, options_.seed, fits, move_,
+                                                result_.unblock.separation_passes);
     if (result_.unblock.separated > 0) escape_.refresh_open_stops();
     result_.unblock.left_invalid = layout_violation(round_.scene());
     if (escape_.unblock(poses_, options_.seed, stop_, valid_, move_, result_.unblock) ||

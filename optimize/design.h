@@ -118,6 +118,7 @@ struct DesignResult {
   struct Unblock {
     int walled_before = 0, walled_after = 0, proposals = 0, accepted = 0;
     int separated = 0;  //!< objects moved to make an invalid input layout valid
+    int separation_passes = 0;  //!< passes over the objects in violation
     //! Why the layout was still not valid after the separation ("" when
     //! it was valid, or was valid from the start).
     std::string left_invalid;

@@ -140,6 +140,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"proposals", result.unblock.proposals},
             {"accepted", result.unblock.accepted},
             {"separated", result.unblock.separated},
+            {"separation_passes", result.unblock.separation_passes},
             {"left_invalid", result.unblock.left_invalid}}},
           {"covering_moves", result.covering_moves},
           {"arrange",

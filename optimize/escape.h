@@ -54,11 +54,13 @@ class EscapePolicy {
   //! (at most kSeparateDraws draws) or, when no draw is valid (a crowded
   //! room), to nearest_free_pose or, when no spot is free, to
   //! displacing_pose (the smaller objects it lands on are separated in
-  //! turn), for up to kSeparatePasses passes. `valid` decides what is free
-  //! (the design loop passes the exact layout checks alone). Returns the
-  //! objects moved; 0 when the layout was valid or escape is off.
+  //! turn), for up to kSeparatePasses passes; a pass that places nothing
+  //! ends it (the layout is unchanged, so the scans would answer the same).
+  //! `valid` decides what is free (the design loop passes the exact layout
+  //! checks alone). Returns the objects moved (0 when the layout was valid
+  //! or escape is off); `passes` gets the passes made.
   int separate(std::vector<Pose2>& poses, std::uint64_t seed, const ValidFn& valid,
-               const PlaceFn& place);
+               const PlaceFn& place, int& passes);
   //! The valid pose of object `o` nearest its place in `poses`: positions
   //! on a 10 cm grid over `box`, nearest first, each at the object's
   //! heading and its three quarter turns. nullopt when none is valid.

@@ -295,6 +295,26 @@ TEST(Design, CrowdedInvalidLayoutIsSeparatedByDisplacingSmallerObjects) {
     EXPECT_EQ(object_violation(r.layout, static_cast<int>(i)), "") << r.layout.objects[i].id;
 }
 
+TEST(Design, SeparationEndsWithThePassThatPlacesNothing) {
+  // A bed nearly as large as the room: with the fixed closet it fits
+  // nowhere, and the objects it lies on find no spot beside it. The first
+  // pass places nothing, so the layout is as it was and a second pass would
+  // repeat the same scans: the separation stops there, and says why.
+  Scene scene = geometry::load_scene(kBedroom);
+  const int bed = scene.find_object("bed");
+  scene.objects[bed].footprint = {{-2.1, -1.9}, {2.1, -1.9}, {2.1, 1.9}, {-2.1, 1.9}};
+  scene.objects[bed].pose = {2.25, 2.0, 0.0};
+  ASSERT_NE(object_violation(scene, bed), "");
+  DesignOptions options;
+  options.planner = hrs::optimize::PlannerConfig::from_preset("default");
+  options.iterations = 5;
+  const auto r = design(scene, options);
+  EXPECT_EQ(r.unblock.separated, 0);
+  EXPECT_EQ(r.unblock.separation_passes, 1);
+  EXPECT_NE(r.unblock.left_invalid, "");
+  EXPECT_FALSE(r.valid);
+}
+
 TEST(Design, ContactSheetCellsAreSizedFromTheDrawnCanvases) {
   // Two rooms of different sizes: the picture's size is the room's canvas
   // (design_picture), and the sheet's cells are as large as the largest.
