@@ -254,12 +254,7 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   for (int k = 0; k < budget && !walled.empty(); ++k) {
     if (stop && stop->load()) break;
     std::vector<int> focus = focus_for(walled, true);
-    // Nothing near a walled stop borders the door's region (a long way in,
-    // through another room): whatever movable object borders it may be the
-    // one that closes the way.
-    if (focus.empty())
-      for (int i : round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25))
-        if (movable_[static_cast<std::size_t>(i)]) focus.push_back(i);
+    if (focus.empty()) focus = door_pocket();
     if (focus.empty()) break;
     const int o = focus[uniform_index(rng, focus.size())];
     const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);
@@ -284,15 +279,35 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   return changed;
 }
 
+//! The movable objects that border the door's reachable region (within the
+//! chair's half length + 25 cm), index order. When nothing near a walled
+//! stop borders that region (the stops lie a long way in, or one object
+//! closes the door's pocket far from every stop), whichever of them closes
+//! the way is among these.
+std::vector<int> EscapePolicy::door_pocket() const {
+  std::vector<int> out;
+  for (int i : round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25))
+    if (movable_[static_cast<std::size_t>(i)]) out.push_back(i);
+  return out;
+}
+
 //! The movable objects near `stops` (see walling_objects()); `in_grid`:
 //! only those bordering the door's reachable region.
 std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_grid) {
-  std::vector<int> out;
-  if (stops.empty()) return out;
   // The stops' footprints: a stop whose goal poses are all covered (by
   // what walls it in) has no free goal pose to measure from.
   std::vector<geometry::Polygon> targets;
   for (int s : stops) targets.push_back(geometry::world_footprint(round_.scene().objects[s]));
+  return near_targets(targets, stops, in_grid);
+}
+
+//! The movable objects among `members` or within kFocusReach of a polygon
+//! of `targets`, index order; `in_grid`: only those bordering the door's
+//! reachable region.
+std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>& targets,
+                                            const std::vector<int>& members, bool in_grid) {
+  std::vector<int> out;
+  if (targets.empty()) return out;
   std::vector<int> candidates;
   if (in_grid) {
     candidates = round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25);
@@ -301,7 +316,7 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
   }
   for (int i : candidates) {
     if (!movable_[i]) continue;
-    bool near = std::find(stops.begin(), stops.end(), i) != stops.end();
+    bool near = std::find(members.begin(), members.end(), i) != members.end();
     const geometry::Polygon fp = geometry::world_footprint(round_.scene().objects[i]);
     for (const geometry::Polygon& t : targets) near = near || geometry::polygon_distance(fp, t) <= kFocusReach;
     if (near) out.push_back(i);
@@ -316,7 +331,8 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
 //! chair's half length + 25 cm) and are such a stop or lie within
 //! kFocusReach of one of their goal poses, and, for a stop with no free
 //! goal pose at all, the stop and the movable objects within kFocusReach
-//! of it wherever they are. Otherwise (the grid joins
+//! of it wherever they are; when there are none of either, the movable
+//! objects bordering the door's region (door_pocket). Otherwise (the grid joins
 //! everything, the car still fails: a turn too tight, a gap the grid's
 //! margin lets through): the movable stops where unfound tours broke off
 //! and the movable objects within kFocusReach of their goal poses, and
@@ -330,12 +346,8 @@ std::vector<int> EscapePolicy::walling_objects() {
     // Every unfound tour breaks off leaving the door: the objects near the
     // door's clear zone box the car's first turn in.
     if (round_.fails_leaving_the_door()) {
-      const geometry::Polygon zone = geometry::door_clear_zone(scene_);
-      for (int i = 0; i < static_cast<int>(movable_.size()); ++i)
-        if (movable_[i] && std::find(out.begin(), out.end(), i) == out.end() &&
-            geometry::polygon_distance(geometry::world_footprint(round_.scene().objects[i]), zone) <=
-                kFocusReach)
-          out.push_back(i);
+      for (int i : near_targets({geometry::door_clear_zone(scene_)}, {}, false))
+        if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
       std::sort(out.begin(), out.end());
     }
     return out;
@@ -349,6 +361,9 @@ std::vector<int> EscapePolicy::walling_objects() {
     if (round_.goals_of(s).empty()) covered.push_back(s);
   for (int i : focus_for(covered, false))
     if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+  // Nothing borders both the door's region and a walled stop: the pocket's
+  // walls (as the unblocking does), else the draw is uniform over the room.
+  if (out.empty()) out = door_pocket();
   std::sort(out.begin(), out.end());
   return out;
 }
