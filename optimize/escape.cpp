@@ -253,8 +253,7 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   bool changed = false;
   for (int k = 0; k < budget && !walled.empty(); ++k) {
     if (stop && stop->load()) break;
-    std::vector<int> focus = focus_for(walled, true);
-    if (focus.empty()) focus = door_pocket();
+    const std::vector<int> focus = focus_for(walled, true);
     if (focus.empty()) break;
     const int o = focus[uniform_index(rng, focus.size())];
     const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);
@@ -279,18 +278,6 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   return changed;
 }
 
-//! The movable objects that border the door's reachable region (within the
-//! chair's half length + 25 cm), index order. When nothing near a walled
-//! stop borders that region (the stops lie a long way in, or one object
-//! closes the door's pocket far from every stop), whichever of them closes
-//! the way is among these.
-std::vector<int> EscapePolicy::door_pocket() const {
-  std::vector<int> out;
-  for (int i : round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25))
-    if (movable_[static_cast<std::size_t>(i)]) out.push_back(i);
-  return out;
-}
-
 //! The movable objects near `stops` (see walling_objects()); `in_grid`:
 //! only those bordering the door's reachable region.
 std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_grid) {
@@ -301,26 +288,45 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
   return near_targets(targets, stops, in_grid);
 }
 
-//! The movable objects among `members` or within kFocusReach of a polygon
-//! of `targets`, index order; `in_grid`: only those bordering the door's
-//! reachable region.
+//! The movable objects among `members` or near a polygon of `targets`,
+//! index order. Without `in_grid`: every movable object within
+//! kFocusReach. With `in_grid`: of the movable objects bordering the door's
+//! reachable region, those within kFocusReach of a target, or within
+//! kNearestBand of the nearest of them to it when none is that near (what
+//! walls a stop in off the door's region is what of that region's border
+//! lies nearest the stop, however large the room: a fixed reach alone left
+//! the focus empty, or on the wrong objects, wherever the stop's room is
+//! more than 2 m across).
 std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>& targets,
                                             const std::vector<int>& members, bool in_grid) {
+  static constexpr double kNearestBand = 0.5;
   std::vector<int> out;
   if (targets.empty()) return out;
   std::vector<int> candidates;
   if (in_grid) {
-    candidates = round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25);
+    for (int i : round_.gate().bordering(0.5 * scene_.wheelchair.length + 0.25))
+      if (movable_[i]) candidates.push_back(i);
   } else {
-    for (int i = 0; i < static_cast<int>(movable_.size()); ++i) candidates.push_back(i);
+    for (int i = 0; i < static_cast<int>(movable_.size()); ++i)
+      if (movable_[i]) candidates.push_back(i);
   }
-  for (int i : candidates) {
-    if (!movable_[i]) continue;
-    bool near = std::find(members.begin(), members.end(), i) != members.end();
-    const geometry::Polygon fp = geometry::world_footprint(round_.scene().objects[i]);
-    for (const geometry::Polygon& t : targets) near = near || geometry::polygon_distance(fp, t) <= kFocusReach;
-    if (near) out.push_back(i);
+  std::vector<geometry::Polygon> footprints;
+  for (int i : candidates) footprints.push_back(geometry::world_footprint(round_.scene().objects[i]));
+  std::vector<char> near(candidates.size(), 0);
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+    near[c] = std::find(members.begin(), members.end(), candidates[c]) != members.end();
+  std::vector<double> d(candidates.size());
+  for (const geometry::Polygon& t : targets) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t c = 0; c < candidates.size(); ++c) {
+      d[c] = geometry::polygon_distance(footprints[c], t);
+      nearest = std::min(nearest, d[c]);
+    }
+    const double reach = in_grid ? std::max(kFocusReach, nearest + kNearestBand) : kFocusReach;
+    for (std::size_t c = 0; c < candidates.size(); ++c) near[c] = near[c] || d[c] <= reach;
   }
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+    if (near[c]) out.push_back(candidates[c]);
   return out;
 }
 
@@ -328,11 +334,10 @@ std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>
 //! objects that most likely stand between the door and the stops it
 //! misses. When stops are walled off in the free grid (grade > 0): the
 //! movable objects that border the door's reachable region (within the
-//! chair's half length + 25 cm) and are such a stop or lie within
-//! kFocusReach of one of their goal poses, and, for a stop with no free
+//! chair's half length + 25 cm) and are such a stop or lie near it
+//! (near_targets), and, for a stop with no free
 //! goal pose at all, the stop and the movable objects within kFocusReach
-//! of it wherever they are; when there are none of either, the movable
-//! objects bordering the door's region (door_pocket). Otherwise (the grid joins
+//! of it wherever they are. Otherwise (the grid joins
 //! everything, the car still fails: a turn too tight, a gap the grid's
 //! margin lets through): the movable stops where unfound tours broke off
 //! and the movable objects within kFocusReach of their goal poses, and
@@ -361,9 +366,6 @@ std::vector<int> EscapePolicy::walling_objects() {
     if (round_.goals_of(s).empty()) covered.push_back(s);
   for (int i : focus_for(covered, false))
     if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
-  // Nothing borders both the door's region and a walled stop: the pocket's
-  // walls (as the unblocking does), else the draw is uniform over the room.
-  if (out.empty()) out = door_pocket();
   std::sort(out.begin(), out.end());
   return out;
 }

@@ -88,7 +88,6 @@ class EscapePolicy {
   std::vector<int> focus_for(const std::vector<int>& stops, bool in_grid);
   std::vector<int> near_targets(const std::vector<geometry::Polygon>& targets,
                                 const std::vector<int>& members, bool in_grid);
-  std::vector<int> door_pocket() const;
 
   const geometry::Scene& scene_;
   TourRound& round_;
