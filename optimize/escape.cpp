@@ -289,14 +289,15 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
 }
 
 //! The movable objects among `members` or near a polygon of `targets`,
-//! index order. Without `in_grid`: every movable object within
-//! kFocusReach. With `in_grid`: of the movable objects bordering the door's
-//! reachable region, those within kFocusReach of a target, or within
-//! kNearestBand of the nearest of them to it when none is that near (what
-//! walls a stop in off the door's region is what of that region's border
-//! lies nearest the stop, however large the room: a fixed reach alone left
-//! the focus empty, or on the wrong objects, wherever the stop's room is
-//! more than 2 m across).
+//! index order (members count only when they are candidates: movable and,
+//! with `in_grid`, bordering the door's region). Without `in_grid`: every
+//! movable object within kFocusReach. With `in_grid`: of the movable
+//! objects bordering the door's reachable region, those within
+//! max(kFocusReach, n + kNearestBand) of a target, n the distance of the
+//! nearest of them to it. What walls a stop off from the door's region is
+//! what of that region's border lies nearest the stop, however large the
+//! room: a fixed reach alone left the focus empty, or on the wrong
+//! objects, wherever the stop's room is more than 2 m across.
 std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>& targets,
                                             const std::vector<int>& members, bool in_grid) {
   static constexpr double kNearestBand = 0.5;
@@ -322,6 +323,7 @@ std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>
       d[c] = geometry::polygon_distance(footprints[c], t);
       nearest = std::min(nearest, d[c]);
     }
+    if (!std::isfinite(nearest)) continue;  // no candidate, or an empty target
     const double reach = in_grid ? std::max(kFocusReach, nearest + kNearestBand) : kFocusReach;
     for (std::size_t c = 0; c < candidates.size(); ++c) near[c] = near[c] || d[c] <= reach;
   }
@@ -334,13 +336,13 @@ std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>
 //! objects that most likely stand between the door and the stops it
 //! misses. When stops are walled off in the free grid (grade > 0): the
 //! movable objects that border the door's reachable region (within the
-//! chair's half length + 25 cm) and are such a stop or lie near it
+//! chair's half length + 25 cm) and are such a stop or lie near one
 //! (near_targets), and, for a stop with no free
 //! goal pose at all, the stop and the movable objects within kFocusReach
 //! of it wherever they are. Otherwise (the grid joins
 //! everything, the car still fails: a turn too tight, a gap the grid's
 //! margin lets through): the movable stops where unfound tours broke off
-//! and the movable objects within kFocusReach of their goal poses, and
+//! and the movable objects within kFocusReach of their footprints, and
 //! when every unfound tour breaks off leaving the door, the movable objects
 //! within kFocusReach of the door's clear zone.
 std::vector<int> EscapePolicy::walling_objects() {
