@@ -157,6 +157,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
            {{"tried", result.polish.tried},
             {"kept", result.polish.kept},
             {"slid", result.polish.slid},
+            {"swapped", result.polish.swapped},
             {"turned", result.polish.turned},
             {"squared", result.polish.squared},
             {"tours_found_before", result.polish.tours_found_before},

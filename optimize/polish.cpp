@@ -60,6 +60,9 @@ int score(const PreferenceReport& r) {
 constexpr double kSlideStep = 0.2;
 constexpr std::size_t kSlideTries = 3;
 
+//! How many of the best exchanges of places are planned per object.
+constexpr std::size_t kSwapTries = 2;
+
 //! Headings this close to square (radians, about 0.06°) are left alone.
 constexpr double kSquareTolerance = 1e-3;
 
@@ -81,17 +84,18 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     return corridor->clear(geometry::world_footprint(o));
   };
   // Places `moves`, plans, and keeps them when every tour found before is
-  // still found (`met` is the preference report of the moved layout); else
-  // puts the objects back.
+  // still found, and with `no_costlier` the total cost is not higher (`met`
+  // is the preference report of the moved layout); else puts the objects
+  // back.
   auto try_moves = [&](const std::vector<std::pair<int, geometry::Pose2>>& moves,
-                       PreferenceReport& met) {
+                       PreferenceReport& met, bool no_costlier = false) {
     std::vector<geometry::Pose2> q = poses;
     for (const auto& [k, pose] : moves) {
       q[static_cast<std::size_t>(k)] = pose;
       hooks.place(k, pose);
     }
     const CostTerms t = hooks.plan(q);
-    if (t.tours_found >= terms.tours_found) {
+    if (t.tours_found >= terms.tours_found && (!no_costlier || t.total() <= terms.total())) {
       poses = std::move(q);
       terms = t;
       report = std::move(met);
@@ -102,6 +106,25 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     for (auto it = moves.rbegin(); it != moves.rend(); ++it)
       hooks.place(it->first, poses[static_cast<std::size_t>(it->first)]);
     return false;
+  };
+  // A wall object of `move` (applied to `q`) whose pose there is invalid
+  // (its spot is taken, or it overhangs the wall's end) slides along the
+  // walls that give it the same heading, nearest first, to the first valid
+  // place; `move` and `q` follow it.
+  const auto settle = [&](std::vector<geometry::Pose2>& q, GroupMove& move) {
+    for (auto& [k, pose] : move) {
+      const geometry::Object& o = scene.objects[static_cast<std::size_t>(k)];
+      if (!o.wall || !o.wall->distance || hooks.valid(q, k)) continue;
+      for (const geometry::Pose2& at : wall_slides(scene, model, q, k, kSlideStep)) {
+        if (std::abs(geometry::wrap_angle(at.theta - pose.theta)) > 1e-9) continue;
+        q[static_cast<std::size_t>(k)] = at;
+        if (hooks.valid(q, k)) {
+          pose = at;
+          break;
+        }
+        q[static_cast<std::size_t>(k)] = pose;
+      }
+    }
   };
   // Two passes: a pose kept in the first can make a partner's pose meet its
   // relation in the second.
@@ -177,6 +200,46 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         if (try_moves({{object, better[k].to}}, better[k].report)) {
           ++out.kept;
           ++out.slid;
+          kept = true;
+          break;
+        }
+      }
+      if (kept || out.tried >= max_tries || (stop && stop->load())) continue;
+      // Every place it could take is held: exchange places with another
+      // movable object (swaps()), the valid exchanges that score higher,
+      // those clear of the corridor first, then the highest score, then the
+      // lower partner index; kept only when the total cost is not higher
+      // (two objects moved at once can lengthen every tour through them).
+      // A later pass can then bring a partner near.
+      struct Swap {
+        bool clear;
+        PreferenceReport report;
+        GroupMove move;
+      };
+      std::vector<Swap> swapped;
+      for (std::size_t j = 0; j < poses.size(); ++j) {
+        if (j == i || !movable[j]) continue;
+        for (GroupMove& move : swaps(scene, poses, object, static_cast<int>(j))) {
+          std::vector<geometry::Pose2> q = poses;
+          for (const auto& [k, pose] : move) q[static_cast<std::size_t>(k)] = pose;
+          settle(q, move);
+          if (!hooks.valid(q, object) || !hooks.valid(q, static_cast<int>(j))) continue;
+          PreferenceReport next = check_preferences(scene, model, q);
+          if (score(next) <= score(report)) continue;
+          const bool c = clear(object, move[0].second) && clear(move[1].first, move[1].second);
+          swapped.push_back({c, std::move(next), std::move(move)});
+        }
+      }
+      std::stable_sort(swapped.begin(), swapped.end(), [](const Swap& a, const Swap& b) {
+        if (a.clear != b.clear) return a.clear;
+        return score(a.report) > score(b.report);
+      });
+      for (std::size_t k = 0; k < swapped.size() && k < kSwapTries; ++k) {
+        if (out.tried >= max_tries || (stop && stop->load())) break;
+        ++out.tried;
+        if (try_moves(swapped[k].move, swapped[k].report, true)) {
+          ++out.kept;
+          ++out.swapped;
           break;
         }
       }
@@ -197,22 +260,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       if (!unmet() || out.tried >= max_tries || (stop && stop->load())) break;
       std::vector<geometry::Pose2> q = poses;
       for (const auto& [k, pose] : move) q[static_cast<std::size_t>(k)] = pose;
-      // A wall object whose spot across is taken slides along the walls
-      // that give it the same heading, nearest first, to the first valid
-      // place.
-      for (auto& [k, pose] : move) {
-        const geometry::Object& o = scene.objects[static_cast<std::size_t>(k)];
-        if (!o.wall || !o.wall->distance || hooks.valid(q, k)) continue;
-        for (const geometry::Pose2& at : wall_slides(scene, model, q, k, kSlideStep)) {
-          if (std::abs(geometry::wrap_angle(at.theta - pose.theta)) > 1e-9) continue;
-          q[static_cast<std::size_t>(k)] = at;
-          if (hooks.valid(q, k)) {
-            pose = at;
-            break;
-          }
-          q[static_cast<std::size_t>(k)] = pose;
-        }
-      }
+      settle(q, move);
       if (!std::all_of(move.begin(), move.end(), [&](const auto& m) { return hooks.valid(q, m.first); }))
         continue;
       PreferenceReport next = check_preferences(scene, model, q);

@@ -5,7 +5,10 @@
 // poses that would meet it (optimize/preferences.h, preferred_poses), one
 // at a time, alone or with one relation partner; when none is kept, at up
 // to three places along the walls (wall_slides) that score higher, those
-// clear of the kept tours' corridor first. A move is kept when the layout
+// clear of the kept tours' corridor first; when none of those is kept,
+// exchanged with another movable object (preferences.h, swaps), up to two
+// exchanges that score higher planned (kept only at no higher total
+// cost). A move is kept when the layout
 // is valid, every tour found before is still found (the tours are planned
 // again) and the preference score rises: preferences met, less one for
 // each angle preference more than 20° off.
@@ -48,6 +51,7 @@ struct PolishResult {
   int tried = 0;  //!< poses planned
   int kept = 0;   //!< poses kept that meet more preferences
   int slid = 0;     //!< of `kept`, poses found sliding along a wall
+  int swapped = 0;  //!< of `kept`, exchanges of two objects' places
   int turned = 0;   //!< heading groups turned as one body (group_turns)
   int squared = 0;  //!< objects turned square to their wall (no heading preference)
 };

@@ -225,6 +225,45 @@ std::vector<Pose2> wall_slides(const geometry::Scene& scene, const CostModel& mo
   return out;
 }
 
+namespace {
+
+//! The middle of the back edge of `o`'s footprint's bounding box, in its
+//! local frame (the front is local +x).
+Vec2 back_middle(const geometry::Object& o) {
+  double x = std::numeric_limits<double>::infinity();
+  double y0 = x, y1 = -x;
+  for (const Vec2& v : o.footprint) {
+    x = std::min(x, v.x);
+    y0 = std::min(y0, v.y);
+    y1 = std::max(y1, v.y);
+  }
+  return {x, 0.5 * (y0 + y1)};
+}
+
+Vec2 rotated(const Vec2& v, double theta) {
+  const double c = std::cos(theta), s = std::sin(theta);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+}  // namespace
+
+std::vector<GroupMove> swaps(const geometry::Scene& scene, const std::vector<Pose2>& poses, int a,
+                             int b) {
+  const geometry::Object& oa = scene.objects[static_cast<std::size_t>(a)];
+  const geometry::Object& ob = scene.objects[static_cast<std::size_t>(b)];
+  const Pose2 pa = pose_of(poses, a), pb = pose_of(poses, b);
+  // Object `o` with its back middle where `at`'s object (back middle `m`) has its own.
+  const auto back_to = [](const geometry::Object& o, const Pose2& at, const Vec2& m) {
+    const Vec2 back = at.position() + rotated(m, at.theta);
+    const Vec2 c = back - rotated(back_middle(o), at.theta);
+    return Pose2{c.x, c.y, at.theta};
+  };
+  std::vector<GroupMove> out;
+  out.push_back({{a, back_to(oa, pb, back_middle(ob))}, {b, back_to(ob, pa, back_middle(oa))}});
+  out.push_back({{a, {pb.x, pb.y, pa.theta}}, {b, {pa.x, pa.y, pb.theta}}});
+  return out;
+}
+
 std::vector<std::vector<int>> heading_groups(const geometry::Scene& scene) {
   const int n = static_cast<int>(scene.objects.size());
   std::vector<int> parent(static_cast<std::size_t>(n));

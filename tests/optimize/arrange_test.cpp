@@ -276,7 +276,7 @@ int polish_score(const PreferenceReport& r) {
 // rejected move was put back), and the count of plannings stays within the
 // cap.
 TEST(Polish, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
-  int kept = 0, slid = 0, turned = 0, rejected = 0, layouts = 0;
+  int kept = 0, slid = 0, swapped = 0, turned = 0, rejected = 0, layouts = 0;
   for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
     const geometry::Scene scene =
         geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
@@ -342,14 +342,15 @@ TEST(Polish, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
       EXPECT_EQ(layout_violation(out), "") << what;
       kept += r.kept;
       slid += r.slid;
+      swapped += r.swapped;
       turned += r.turned;
       ++layouts;
     }
   }
   std::printf(
-      "%d layouts: %d moves kept (%d slid along a wall), %d groups turned, %d planned layouts lost "
-      "a tour\n",
-      layouts, kept, slid, turned, rejected);
+      "%d layouts: %d moves kept (%d slid along a wall, %d exchanges), %d groups turned, %d planned "
+      "layouts lost a tour\n",
+      layouts, kept, slid, swapped, turned, rejected);
   // The situations the test is about occurred.
   EXPECT_GT(kept, 200);
   EXPECT_GT(slid, 0);
@@ -411,6 +412,107 @@ TEST(Polish, TurnsAGroupLinkedByRelationAnglesAsOneBody) {
                 std::numbers::pi, 1e-9);
     EXPECT_EQ(poses[static_cast<std::size_t>(i)].position(), scene.objects[static_cast<std::size_t>(i)].pose.position());
   }
+}
+
+// Two desks of one size: `far` wants to stand 0.75 m from a fixed lamp in
+// a corner, and `near`, which wants nothing, holds the only place there.
+// The pose that meets the relation (on the line to the lamp) overlaps
+// `near`, and `far` has no wall to slide along; only exchanging the two
+// desks meets it. The polish finds the exchange, and `near` ends where
+// `far` stood.
+TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "desks",
+    "room": {"size": [6, 4]},
+    "door": {"center": [5.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "lamp", "size": [0.3, 0.3], "pose": [0.3, 3.7, 0], "fixed": true},
+      {"id": "near", "size": [0.6, 1.0], "pose": [1.0, 3.5, 0]},
+      {"id": "far", "size": [0.6, 1.0], "pose": [4.5, 2.0, 0]}
+    ],
+    "relations": [{"a": "far", "b": "lamp", "distance": 0.75}],
+    "activity": {"transitions": {"door": {"near": 1.0}, "near": {"far": 1.0}, "far": {"near": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "desks");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable{false, true, true};
+  std::vector<Pose2> poses;
+  for (const auto& o : scene.objects) poses.push_back(o.pose);
+  ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
+  geometry::Scene scratch = scene;
+  PolishHooks hooks;
+  hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
+    for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+    return object_violation(scratch, moved).empty();
+  };
+  hooks.place = [](int, const Pose2&) {};
+  hooks.plan = [](const std::vector<Pose2>&) {
+    CostTerms t;
+    t.tours_total = t.tours_found = 2;
+    return t;
+  };
+  hooks.kept = [] {};
+  CostTerms terms;
+  terms.tours_total = terms.tours_found = 2;
+  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  EXPECT_EQ(r.swapped, 1);
+  EXPECT_EQ(r.slid, 0);
+  EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
+  EXPECT_NEAR(geometry::norm(poses[2].position() - Vec2{1.0, 3.5}), 0.0, 1e-9);
+  EXPECT_NEAR(geometry::norm(poses[1].position() - Vec2{4.5, 2.0}), 0.0, 1e-9);
+  for (std::size_t i = 0; i < poses.size(); ++i) scratch.objects[i].pose = poses[i];
+  EXPECT_EQ(layout_violation(scratch), "");
+}
+
+// The same room, but the planner stands in for one whose tours through the
+// exchanged desks are longer: the exchange meets the relation, but costs
+// more, so it is not kept.
+TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "desks",
+    "room": {"size": [6, 4]},
+    "door": {"center": [5.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "lamp", "size": [0.3, 0.3], "pose": [0.3, 3.7, 0], "fixed": true},
+      {"id": "near", "size": [0.6, 1.0], "pose": [1.0, 3.5, 0]},
+      {"id": "far", "size": [0.6, 1.0], "pose": [4.5, 2.0, 0]}
+    ],
+    "relations": [{"a": "far", "b": "lamp", "distance": 0.75}],
+    "activity": {"transitions": {"door": {"near": 1.0}, "near": {"far": 1.0}, "far": {"near": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "desks");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable{false, true, true};
+  std::vector<Pose2> poses;
+  for (const auto& o : scene.objects) poses.push_back(o.pose);
+  const std::vector<Pose2> input = poses;
+  geometry::Scene scratch = scene;
+  PolishHooks hooks;
+  hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
+    for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+    return object_violation(scratch, moved).empty();
+  };
+  hooks.place = [](int, const Pose2&) {};
+  int planned = 0;
+  hooks.plan = [&](const std::vector<Pose2>&) {
+    ++planned;
+    CostTerms t;
+    t.tours_total = t.tours_found = 2;
+    t.path_length = 5.0;  // longer than the input's
+    return t;
+  };
+  hooks.kept = [] {};
+  CostTerms terms;
+  terms.tours_total = terms.tours_found = 2;
+  terms.path_length = 1.0;
+  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  EXPECT_GT(planned, 0);  // the exchange was planned
+  EXPECT_EQ(r.swapped, 0);
+  EXPECT_EQ(poses, input);
 }
 
 }  // namespace

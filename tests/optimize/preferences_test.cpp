@@ -3,7 +3,8 @@
 // (an object 3° off its wall, a TV facing away, a relation distance), which
 // terms count, the wall poses that preferred_poses() proposes on thousands
 // of random rooms and objects, and preference moves that never leave the
-// layout invalid.
+// layout invalid; the exchanges of places (swaps) against the footprints'
+// world vertices.
 
 #include "optimize/preferences.h"
 
@@ -257,6 +258,82 @@ TEST(Preferences, GroupTurnsMeetEveryRelationAngleOfAConsistentGroup) {
   }
   EXPECT_EQ(cases, 2000);
   EXPECT_GT(walled, 500);
+}
+
+// swaps() against the footprints' world vertices, on 4000 random pairs of
+// rectangles and triangles at random poses: back to back, each object takes
+// the other's heading, and its footprint's extent along that heading starts
+// where the other's started (the back line a wall object keeps), centred
+// across it the same way; centre for centre, the reference points are
+// exchanged and the headings kept.
+TEST(Preferences, SwapsPutEachBackWhereTheOthersWas) {
+  std::mt19937_64 rng(3535);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  // The extent [min, max] of `poly`'s projections on direction `d`.
+  const auto extent = [](const geometry::Polygon& poly, geometry::Vec2 d) {
+    double lo = 1e300, hi = -1e300;
+    for (const geometry::Vec2& v : poly) {
+      lo = std::min(lo, v.x * d.x + v.y * d.y);
+      hi = std::max(hi, v.x * d.x + v.y * d.y);
+    }
+    return std::pair{lo, hi};
+  };
+  int cases = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const auto shape = [&](const std::string& id, double x, double y) {
+      const std::string pose = "[" + std::to_string(x) + "," + std::to_string(y) + "," +
+                               std::to_string(2 * kPi * u(rng) - kPi) + "]";
+      if (u(rng) < 0.3) {
+        // A triangle whose reference point is off its box's centre.
+        return R"({"id": ")" + id + R"(", "pose": )" + pose + R"(, "polygon": [[)" +
+               std::to_string(-0.2 - 0.5 * u(rng)) + "," + std::to_string(-0.1 - 0.4 * u(rng)) +
+               "],[" + std::to_string(0.1 + 0.5 * u(rng)) + "," + std::to_string(-0.1 - 0.2 * u(rng)) +
+               "],[" + std::to_string(0.05 * u(rng)) + "," + std::to_string(0.2 + 0.5 * u(rng)) + "]]}";
+      }
+      return R"({"id": ")" + id + R"(", "pose": )" + pose + R"(, "size": [)" +
+             std::to_string(0.2 + 1.0 * u(rng)) + "," + std::to_string(0.3 + 1.8 * u(rng)) + "]}";
+    };
+    const std::string text = R"({"format": "hrspace-scene/1", "name": "swap",
+      "room": {"size": [12, 12]},
+      "door": {"center": [6.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+      "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+      "objects": [)" + shape("a", 2.0 + 3 * u(rng), 2.0 + 8 * u(rng)) + "," +
+                             shape("b", 7.0 + 3 * u(rng), 2.0 + 8 * u(rng)) + R"(],
+      "activity": {"transitions": {"door": {"a": 1.0}, "a": {"b": 1.0}, "b": {"a": 1.0}},
+                   "sequences": 2, "visits": 2}})";
+    const Scene s = geometry::parse_scene(text, "swap");
+    const std::vector<Pose2> p = poses_of(s);
+    const std::vector<GroupMove> moves = swaps(s, p, 0, 1);
+    ASSERT_EQ(moves.size(), 2u);
+    for (const GroupMove& m : moves) {
+      ASSERT_EQ(m.size(), 2u);
+      EXPECT_EQ(m[0].first, 0);
+      EXPECT_EQ(m[1].first, 1);
+    }
+    for (int k = 0; k < 2; ++k) {
+      // Object k at its back-to-back pose against the other, `o`, as it was.
+      const int o = 1 - k;
+      const Pose2 to = moves[0][static_cast<std::size_t>(k)].second;
+      EXPECT_NEAR(std::abs(geometry::wrap_angle(to.theta - p[static_cast<std::size_t>(o)].theta)), 0.0,
+                  1e-12);
+      geometry::Object moved = s.objects[static_cast<std::size_t>(k)];
+      moved.pose = to;
+      const geometry::Polygon now = geometry::world_footprint(moved);
+      const geometry::Polygon was = geometry::world_footprint(s.objects[static_cast<std::size_t>(o)]);
+      const double t = p[static_cast<std::size_t>(o)].theta;
+      const geometry::Vec2 front{std::cos(t), std::sin(t)}, left{-std::sin(t), std::cos(t)};
+      EXPECT_NEAR(extent(now, front).first, extent(was, front).first, 1e-9) << "trial " << trial;
+      const auto [l0, l1] = extent(now, left);
+      const auto [w0, w1] = extent(was, left);
+      EXPECT_NEAR(0.5 * (l0 + l1), 0.5 * (w0 + w1), 1e-9) << "trial " << trial;
+      // Centre for centre.
+      const Pose2 c = moves[1][static_cast<std::size_t>(k)].second;
+      EXPECT_EQ(c.position(), p[static_cast<std::size_t>(o)].position());
+      EXPECT_EQ(c.theta, p[static_cast<std::size_t>(k)].theta);
+      ++cases;
+    }
+  }
+  EXPECT_EQ(cases, 8000);
 }
 
 TEST(Preferences, PreferenceMovesNeverLeaveTheLayoutInvalid) {
