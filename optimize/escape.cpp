@@ -253,7 +253,7 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   bool changed = false;
   for (int k = 0; k < budget && !walled.empty(); ++k) {
     if (stop && stop->load()) break;
-    const std::vector<int> focus = focus_for(walled, true);
+    const std::vector<int> focus = walled_focus(walled);
     if (focus.empty()) break;
     const int o = focus[uniform_index(rng, focus.size())];
     const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);
@@ -286,6 +286,49 @@ std::vector<int> EscapePolicy::focus_for(const std::vector<int>& stops, bool in_
   std::vector<geometry::Polygon> targets;
   for (int s : stops) targets.push_back(geometry::world_footprint(round_.scene().objects[s]));
   return near_targets(targets, stops, in_grid);
+}
+
+namespace {
+
+geometry::Scene without_movable(const geometry::Scene& scene) {
+  geometry::Scene fixed = scene;
+  fixed.objects.clear();
+  for (const geometry::Object& o : scene.objects)
+    if (o.fixed) fixed.objects.push_back(o);
+  return fixed;
+}
+
+}  // namespace
+
+EscapePolicy::FixedOnly::FixedOnly(const geometry::Scene& s)
+    : scene(without_movable(s)), cspace(scene), gate(scene, cspace) {}
+
+//! The movable stops of `walled` that only moving themselves can bring
+//! within the door's reach: with every movable object taken out of the
+//! room, the door still reaches none of their goal poses (certified by the
+//! free grid of the walls and the fixed objects alone). What closes their
+//! pocket is fixed (a partition's opening narrowed by a fixed wardrobe
+//! below the chair's width), so moving the objects around it, which the
+//! focus does for every other walled stop, cannot open it. Stops with no
+//! free goal pose are left to the covered-stop rule.
+std::vector<int> EscapePolicy::sealed_by_fixed(const std::vector<int>& walled) {
+  std::vector<int> out;
+  for (int s : walled) {
+    if (!movable_[static_cast<std::size_t>(s)]) continue;
+    const auto goals = round_.goals_of(s);
+    if (goals.empty()) continue;
+    if (!fixed_only_) fixed_only_ = std::make_unique<FixedOnly>(scene_);
+    if (fixed_only_->gate.walls_off(goals)) out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<int> EscapePolicy::walled_focus(const std::vector<int>& walled) {
+  std::vector<int> out = focus_for(walled, true);
+  for (int s : sealed_by_fixed(walled))
+    if (std::find(out.begin(), out.end(), s) == out.end()) out.push_back(s);
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 //! The movable objects among `members` or near a polygon of `targets`,
@@ -337,7 +380,8 @@ std::vector<int> EscapePolicy::near_targets(const std::vector<geometry::Polygon>
 //! misses. When stops are walled off in the free grid (grade > 0): the
 //! movable objects that border the door's reachable region (within the
 //! chair's half length + 25 cm) and are such a stop or lie near one
-//! (near_targets), and, for a stop with no free
+//! (near_targets), the walled stops that fixed objects alone seal
+//! (sealed_by_fixed), and, for a stop with no free
 //! goal pose at all, the stop and the movable objects within kFocusReach
 //! of it wherever they are. Otherwise (the grid joins
 //! everything, the car still fails: a turn too tight, a gap the grid's
@@ -359,7 +403,7 @@ std::vector<int> EscapePolicy::walling_objects() {
     }
     return out;
   }
-  std::vector<int> out = focus_for(walled, true);
+  std::vector<int> out = walled_focus(walled);
   // A stop without a single free goal pose is covered where it stands,
   // however far the door's region reaches: it and its neighbours join
   // (measured: a bookshelf facing the bed, otherwise never moved).

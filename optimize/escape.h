@@ -8,12 +8,14 @@
 //   - covers_a_stop(): a move that leaves a stop which has a free goal pose
 //     without any is invalid;
 //   - walling_objects(): the annealer's focus, the objects that most likely
-//     stand between the door and the stops unfound tours miss.
+//     stand between the door and the stops unfound tours miss (and a
+//     walled stop itself when fixed objects alone seal its pocket).
 // The unfound-tour grades themselves are the round's (TourRound::blockage).
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <random>
 #include <vector>
@@ -23,6 +25,7 @@
 #include "optimize/design.h"
 #include "optimize/sequences.h"
 #include "optimize/tour_round.h"
+#include "planning/reach_gate.h"
 
 namespace hrs::optimize {
 
@@ -88,6 +91,20 @@ class EscapePolicy {
   std::vector<int> focus_for(const std::vector<int>& stops, bool in_grid);
   std::vector<int> near_targets(const std::vector<geometry::Polygon>& targets,
                                 const std::vector<int>& members, bool in_grid);
+  std::vector<int> sealed_by_fixed(const std::vector<int>& walled);
+  //! walled_focus(): focus_for(walled, true) and the stops of `walled`
+  //! that sealed_by_fixed() finds, ascending.
+  std::vector<int> walled_focus(const std::vector<int>& walled);
+
+  //! The room with its fixed objects alone, and a reach gate over it
+  //! (built at the first sealed_by_fixed() query; fixed objects never move).
+  struct FixedOnly {
+    explicit FixedOnly(const geometry::Scene& scene);
+    geometry::Scene scene;
+    geometry::CSpace cspace;
+    planning::ReachGate gate;
+  };
+  std::unique_ptr<FixedOnly> fixed_only_;
 
   const geometry::Scene& scene_;
   TourRound& round_;
