@@ -414,14 +414,10 @@ TEST(Polish, TurnsAGroupLinkedByRelationAnglesAsOneBody) {
   }
 }
 
-// Two desks of one size: `far` wants to stand 0.75 m from a fixed lamp in
-// a corner, and `near`, which wants nothing, holds the only place there.
-// The pose that meets the relation (on the line to the lamp) overlaps
-// `near`, and `far` has no wall to slide along; only exchanging the two
-// desks meets it. The polish finds the exchange, and `near` ends where
-// `far` stood.
-TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
-  const geometry::Scene scene = geometry::parse_scene(R"({
+//! Two desks of one size: `far` wants to stand 0.75 m from a fixed lamp in
+//! a corner, and `near`, which wants nothing, holds the only place there.
+geometry::Scene desks_scene() {
+  return geometry::parse_scene(R"({
     "format": "hrspace-scene/1", "name": "desks",
     "room": {"size": [6, 4]},
     "door": {"center": [5.0, 0.0], "width": 0.9, "clear_depth": 0.3},
@@ -435,6 +431,27 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
     "activity": {"transitions": {"door": {"near": 1.0}, "near": {"far": 1.0}, "far": {"near": 1.0}},
                  "sequences": 2, "visits": 2}
   })", "desks");
+}
+
+//! Polish hooks whose validity is the exact layout checks on `scratch`;
+//! place() and kept() do nothing (plan() is the caller's).
+PolishHooks exact_hooks(geometry::Scene& scratch) {
+  PolishHooks hooks;
+  hooks.valid = [&scratch](const std::vector<Pose2>& p, int moved) {
+    for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+    return object_violation(scratch, moved).empty();
+  };
+  hooks.place = [](int, const Pose2&) {};
+  hooks.kept = [] {};
+  return hooks;
+}
+
+// desks_scene(): the pose that meets the relation (on the line to the
+// lamp) overlaps `near`, and `far` has no wall to slide along; only
+// exchanging the two desks meets it. The polish finds the exchange, and `near` ends where
+// `far` stood.
+TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
+  const geometry::Scene scene = desks_scene();
   CostModel model(scene, scene_sequences(scene));
   model.set_bounded_preferences(true);
   const std::vector<bool> movable{false, true, true};
@@ -442,18 +459,12 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
   for (const auto& o : scene.objects) poses.push_back(o.pose);
   ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
   geometry::Scene scratch = scene;
-  PolishHooks hooks;
-  hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
-    for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-    return object_violation(scratch, moved).empty();
-  };
-  hooks.place = [](int, const Pose2&) {};
+  PolishHooks hooks = exact_hooks(scratch);
   hooks.plan = [](const std::vector<Pose2>&) {
     CostTerms t;
     t.tours_total = t.tours_found = 2;
     return t;
   };
-  hooks.kept = [] {};
   CostTerms terms;
   terms.tours_total = terms.tours_found = 2;
   const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
@@ -470,20 +481,7 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
 // exchanged desks are longer: the exchange meets the relation, but costs
 // more, so it is not kept.
 TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
-  const geometry::Scene scene = geometry::parse_scene(R"({
-    "format": "hrspace-scene/1", "name": "desks",
-    "room": {"size": [6, 4]},
-    "door": {"center": [5.0, 0.0], "width": 0.9, "clear_depth": 0.3},
-    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
-    "objects": [
-      {"id": "lamp", "size": [0.3, 0.3], "pose": [0.3, 3.7, 0], "fixed": true},
-      {"id": "near", "size": [0.6, 1.0], "pose": [1.0, 3.5, 0]},
-      {"id": "far", "size": [0.6, 1.0], "pose": [4.5, 2.0, 0]}
-    ],
-    "relations": [{"a": "far", "b": "lamp", "distance": 0.75}],
-    "activity": {"transitions": {"door": {"near": 1.0}, "near": {"far": 1.0}, "far": {"near": 1.0}},
-                 "sequences": 2, "visits": 2}
-  })", "desks");
+  const geometry::Scene scene = desks_scene();
   CostModel model(scene, scene_sequences(scene));
   model.set_bounded_preferences(true);
   const std::vector<bool> movable{false, true, true};
@@ -491,12 +489,7 @@ TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
   for (const auto& o : scene.objects) poses.push_back(o.pose);
   const std::vector<Pose2> input = poses;
   geometry::Scene scratch = scene;
-  PolishHooks hooks;
-  hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
-    for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-    return object_violation(scratch, moved).empty();
-  };
-  hooks.place = [](int, const Pose2&) {};
+  PolishHooks hooks = exact_hooks(scratch);
   int planned = 0;
   hooks.plan = [&](const std::vector<Pose2>&) {
     ++planned;
@@ -505,7 +498,6 @@ TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
     t.path_length = 5.0;  // longer than the input's
     return t;
   };
-  hooks.kept = [] {};
   CostTerms terms;
   terms.tours_total = terms.tours_found = 2;
   terms.path_length = 1.0;
