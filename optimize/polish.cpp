@@ -126,6 +126,33 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       }
     }
   };
+  // The valid candidates that score higher (wall slides, exchanges of
+  // places): those clear of the tours' corridor first (they seldom cost a
+  // tour), then the highest score, then the order found (the nearest
+  // slide, the lower partner index). The best `tries` are planned in turn
+  // until one is kept (try_moves); true when one was.
+  struct Candidate {
+    bool clear;
+    PreferenceReport report;
+    GroupMove move;
+  };
+  const auto try_best = [&](std::vector<Candidate>& candidates, std::size_t tries,
+                            bool no_costlier) {
+    std::stable_sort(candidates.begin(), candidates.end(),
+                     [](const Candidate& a, const Candidate& b) {
+                       if (a.clear != b.clear) return a.clear;
+                       return score(a.report) > score(b.report);
+                     });
+    for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
+      if (out.tried >= max_tries || (stop && stop->load())) break;
+      ++out.tried;
+      if (try_moves(candidates[k].move, candidates[k].report, no_costlier)) {
+        ++out.kept;
+        return true;
+      }
+    }
+    return false;
+  };
   // Two passes: a pose kept in the first can make a partner's pose meet its
   // relation in the second.
   for (int pass = 0; pass < 2 && report.met < report.total; ++pass) {
@@ -173,51 +200,27 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         }
       }
       if (kept || out.tried >= max_tries || (stop && stop->load())) continue;
-      // The spots straight across are taken: slide along the walls. The
-      // valid places that score higher are planned: those clear of the
-      // tours' corridor first (they seldom cost a tour), then the highest
-      // score, then the nearest.
-      struct Slide {
-        bool clear;
-        PreferenceReport report;
-        geometry::Pose2 to;
-      };
-      std::vector<Slide> better;
+      // The spots straight across are taken: slide along the walls.
+      std::vector<Candidate> slides;
       for (const geometry::Pose2& to : wall_slides(scene, model, poses, object, kSlideStep)) {
         std::vector<geometry::Pose2> p = poses;
         p[i] = to;
         if (!hooks.valid(p, object)) continue;
         PreferenceReport next = check_preferences(scene, model, p);
-        if (score(next) > score(report)) better.push_back({clear(object, to), std::move(next), to});
+        if (score(next) > score(report))
+          slides.push_back({clear(object, to), std::move(next), {{object, to}}});
       }
-      std::stable_sort(better.begin(), better.end(), [](const Slide& a, const Slide& b) {
-        if (a.clear != b.clear) return a.clear;
-        return score(a.report) > score(b.report);
-      });
-      for (std::size_t k = 0; k < better.size() && k < kSlideTries; ++k) {
-        if (out.tried >= max_tries || (stop && stop->load())) break;
-        ++out.tried;
-        if (try_moves({{object, better[k].to}}, better[k].report)) {
-          ++out.kept;
-          ++out.slid;
-          kept = true;
-          break;
-        }
+      if (try_best(slides, kSlideTries, false)) {
+        ++out.slid;
+        continue;
       }
-      if (kept || out.tried >= max_tries || (stop && stop->load())) continue;
+      if (out.tried >= max_tries || (stop && stop->load())) continue;
       // Every place it could take is held: exchange places with another
-      // movable object (swaps()), the valid exchanges that score higher,
-      // those clear of the corridor first, then the highest score, then the
-      // lower partner index; kept only when the total cost is not higher
-      // (two objects moved at once can lengthen every tour through them).
-      // A later pass can then bring a partner near.
-      struct Swap {
-        bool clear;
-        PreferenceReport report;
-        GroupMove move;
-      };
-      std::vector<Swap> swapped;
-      for (std::size_t j = 0; j < poses.size(); ++j) {
+      // movable object (swaps()). Kept only when the total cost is not
+      // higher: two objects moved at once can lengthen every tour through
+      // them. A later pass can then bring a partner near.
+      std::vector<Candidate> exchanges;
+      for (std::size_t j = 0; j < poses.size() && !(stop && stop->load()); ++j) {
         if (j == i || !movable[j]) continue;
         for (GroupMove& move : swaps(scene, poses, object, static_cast<int>(j))) {
           std::vector<geometry::Pose2> q = poses;
@@ -227,22 +230,10 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           PreferenceReport next = check_preferences(scene, model, q);
           if (score(next) <= score(report)) continue;
           const bool c = clear(object, move[0].second) && clear(move[1].first, move[1].second);
-          swapped.push_back({c, std::move(next), std::move(move)});
+          exchanges.push_back({c, std::move(next), std::move(move)});
         }
       }
-      std::stable_sort(swapped.begin(), swapped.end(), [](const Swap& a, const Swap& b) {
-        if (a.clear != b.clear) return a.clear;
-        return score(a.report) > score(b.report);
-      });
-      for (std::size_t k = 0; k < swapped.size() && k < kSwapTries; ++k) {
-        if (out.tried >= max_tries || (stop && stop->load())) break;
-        ++out.tried;
-        if (try_moves(swapped[k].move, swapped[k].report, true)) {
-          ++out.kept;
-          ++out.swapped;
-          break;
-        }
-      }
+      if (try_best(exchanges, kSwapTries, true)) ++out.swapped;
     }
   }
   // Groups linked by relation angles turn as one body (a bed, the TV that

@@ -92,16 +92,15 @@ std::vector<std::vector<int>> heading_groups(const geometry::Scene& scene);
 //! One move of several objects: (object, pose) pairs.
 using GroupMove = std::vector<std::pair<int, geometry::Pose2>>;
 
-//! The places of objects `a` and `b` exchanged, as up to two moves:
+//! The places of objects `a` and `b` exchanged, as two moves:
 //! back to back (each takes the other's heading, and its footprint's back
 //! edge, centred, goes where the other's was, so a wall object keeps the
-//! wall it takes over at the same distance), then centre for centre (each
-//! keeps its own heading). A desk wanted beside the sofa whose corner
+//! wall it takes over at the same distance), then position for position
+//! (each takes the other's pose position and keeps its own heading). A desk wanted beside the sofa whose corner
 //! another desk holds needs both to move at once; no single move meets it.
 //! Not checked for validity (the caller's exact predicates decide).
 std::vector<GroupMove> swaps(const geometry::Scene& scene, const std::vector<geometry::Pose2>& poses,
                              int a, int b);
-
 
 //! Turns of heading group `group` (heading_groups()) as one body, so that
 //! its relation angles hold along a spanning tree (BFS from its first
