@@ -53,7 +53,7 @@ class DesignRun {
         round_(scene, options, sequences_, stop),
         movable_(movable_of(scene)),
         plan_every_iteration_(plans_every_iteration(scene)),
-        escape_(scene, round_, sequences_, movable_, options.planner.escape,
+        escape_(scene, round_, sequences_, movable_, options,
                 plan_every_iteration_) {
     result_.sequences = sequences_;
     result_.threads = round_.threads();
@@ -168,9 +168,10 @@ class DesignRun {
 
   //! The exact checks of one moved object, before any planning.
   //! Every object is taken at `p` (a pair move of the polish checks the
-  //! partner against the object's new pose).
+  //! partner against the object's new pose, and the covered-stop rule
+  //! moves both in the C-space).
   bool move_valid(const std::vector<Pose2>& p, int moved) {
-    return round_.fits(p, moved) && !escape_.covers_a_stop(p[moved], moved);
+    return round_.fits(p, moved) && !escape_.covers_a_stop(p, moved);
   }
 
   //! Applies a proposal to the C-space, tours it and returns its cost, or
@@ -294,7 +295,7 @@ class DesignRun {
   void arrange_best(std::vector<Pose2>& poses, CostTerms& terms) {
     ArrangeHooks hooks;
     hooks.valid = valid_;
-    hooks.set = [this](int o, const Pose2& to) { round_.sketch(o, to); };
+    hooks.set = move_;  // the C-space follows, so the covered-stop rule sees the arrangement
     hooks.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
       return preferred_move(p, o, rng);
     };
@@ -328,6 +329,14 @@ class DesignRun {
       result_.tours = round_.tours();
       result_.final = terms;
     }
+    // Feasibility first: stops the annealing left walled off are unblocked
+    // before the preference stages, which then keep the tours this finds.
+    if (options_.planner.rescue && result_.valid && terms.tours_found < terms.tours_total) {
+      result_.rescue.tours_unfound = terms.tours_total - terms.tours_found;
+      result_.rescue.unblocked += unblock_unfound(poses, terms);
+      result_.final = terms;
+      unblocked_layout_ = poses;
+    }
     arrange_best(poses, terms);
     result_.polish.tours_found_before = terms.tours_found;
     result_.polish.met_before = check_preferences(scene_, model_, poses).met;
@@ -346,29 +355,40 @@ class DesignRun {
     result_.valid = layout_violation(result_.layout).empty();
   }
 
+  //! Stops still walled off in layout `p` (placed and toured: `terms`,
+  //! result_.tours) are unblocked once more (EscapePolicy::unblock); the
+  //! unblocked layout is kept, in `p`, `terms`, result_.tours and
+  //! result_.layout, when it finds more tours. Returns the tours gained.
+  int unblock_unfound(std::vector<Pose2>& p, CostTerms& terms) {
+    escape_.refresh_open_stops();
+    std::vector<Pose2> q = p;
+    DesignResult::Unblock stats;
+    if (!escape_.unblock(q, options_.seed + 1, stop_, valid_, move_, stats)) return 0;
+    const CostTerms t = replan(q);
+    if (t.tours_found <= terms.tours_found) {
+      round_.place(p);
+      return 0;
+    }
+    const int gained = t.tours_found - terms.tours_found;
+    p = q, terms = t, result_.tours = round_.tours();
+    for (std::size_t i = 0; i < p.size(); ++i) result_.layout.objects[i].pose = p[i];
+    return gained;
+  }
+
   //! The rescue of the final layout's unfound tours (PlannerConfig::rescue):
-  //! stops still walled off are unblocked once more (EscapePolicy::unblock,
-  //! kept when more tours are found), then the lattice plans the legs the
-  //! RRT misses (TourRound::rescue).
+  //! stops still walled off are unblocked once more when the layout changed
+  //! since the polish's unblocking (unblock_unfound), then the lattice plans
+  //! the legs the RRT misses (TourRound::rescue).
   void rescue_tours() {
     auto& r = result_.rescue;
-    r.tours_unfound = result_.final.tours_total - result_.final.tours_found;
-    if (r.tours_unfound == 0) return;
+    const int unfound = result_.final.tours_total - result_.final.tours_found;
+    if (unfound == 0) return;
+    if (unblocked_layout_.empty()) r.tours_unfound = unfound;  // else the first unblocking's
     const auto t = Clock::now();
     std::vector<Pose2> p;  // the final layout
     for (const auto& o : result_.layout.objects) p.push_back(o.pose);
     round_.place(p);
-    escape_.refresh_open_stops();
-    std::vector<Pose2> q = p;
-    DesignResult::Unblock stats;
-    if (escape_.unblock(q, options_.seed + 1, stop_, valid_, move_, stats)) {
-      const CostTerms terms = replan(q);
-      if (terms.tours_found > result_.final.tours_found) {
-        r.unblocked = terms.tours_found - result_.final.tours_found;
-        p = q, result_.tours = round_.tours(), result_.final = terms;
-        for (std::size_t i = 0; i < p.size(); ++i) result_.layout.objects[i].pose = p[i];
-      }
-    }
+    if (p != unblocked_layout_) r.unblocked += unblock_unfound(p, result_.final);
     r.ran = true, r.tours_found = round_.rescue(p, result_.tours, ++iteration_);
     if (r.tours_found > 0) {
       result_.tours = round_.tours();
@@ -434,6 +454,7 @@ class DesignRun {
   TourRound round_;
   std::vector<Pose2> poses_;
   std::vector<Pose2> poses_initial_;  //!< the input layout's
+  std::vector<Pose2> unblocked_layout_;  //!< the layout the polish's unblocking left
   std::vector<bool> movable_;
   bool plan_every_iteration_ = true;
   EscapePolicy escape_;

@@ -138,8 +138,9 @@ struct DesignResult {
   //! (PlannerConfig::rescue): whether it ran, the tours it found, its time.
   struct Rescue {
     bool ran = false;
-    int tours_unfound = 0, tours_found = 0;
-    int unblocked = 0;  //!< tours found after unblocking the walled-off stops again
+    int tours_unfound = 0;  //!< by the annealing's best layout (the final one without `prefer`)
+    int tours_found = 0;    //!< by the lattice
+    int unblocked = 0;      //!< by unblocking the walled-off stops again (before the polish, after it)
     double ms = 0.0;
   } rescue;
   long legs_refused = 0;     //!< legs the free grid proved impossible

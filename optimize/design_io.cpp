@@ -219,7 +219,7 @@ json reuse_json(const DesignResult& result) {
 std::string report_document(const DesignResult& result, const RunInfo& info) {
   json r = run_report_json(result, info);
   if (result.proposed) r["reuse"] = reuse_json(result);
-  if (result.rescue.ran)
+  if (result.rescue.ran || result.rescue.unblocked > 0)
     r["rescue"] = {{"tours_unfound", result.rescue.tours_unfound},
                    {"unblocked", result.rescue.unblocked},
                    {"tours_found", result.rescue.tours_found},

@@ -10,6 +10,7 @@
 
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "optimize/preferences.h"
 
 namespace hrs::optimize {
 
@@ -122,12 +123,15 @@ std::optional<Pose2> EscapePolicy::displacing_pose(int o, const std::vector<Pose
 
 EscapePolicy::EscapePolicy(const geometry::Scene& scene, TourRound& round,
                            const std::vector<Sequence>& sequences,
-                           const std::vector<bool>& movable, bool escape, bool plan_every)
+                           const std::vector<bool>& movable, const DesignOptions& options,
+                           bool plan_every)
     : scene_(scene),
       round_(round),
       sequences_(sequences),
       movable_(movable),
-      escape_(escape),
+      cspace_options_(options.cspace),
+      gate_options_(options.gate),
+      escape_(options.planner.escape),
       plan_every_(plan_every) {}
 
 //! The objects that are stops of some sequence, ascending.
@@ -163,50 +167,104 @@ void EscapePolicy::refresh_open_stops() {
     if (!round_.goals_of(s).empty()) open_stops_.push_back(s);
 }
 
-//! With `escape`: true when moving object `moved` to `to` leaves a stop
-//! that has a free goal pose now without any (docs/optimize.md "Blocked
-//! layouts"). Such a layout has no tour through that stop whatever the
-//! planner does, and once the annealer accepts one (while hot) the move
-//! back is seldom drawn. Only the stops within reach of the object's new
-//! footprint are asked, with the object moved in the C-space and back.
-bool EscapePolicy::covers_a_stop(const Pose2& to, int moved) {
+//! With `escape`: true when the layout `poses` leaves a stop that has a
+//! free goal pose now without any (docs/optimize.md "Blocked layouts").
+//! Such a layout has no tour through that stop whatever the planner does,
+//! and once the annealer accepts one (while hot) the move back is seldom
+//! drawn. The moved objects are `moved` and every object whose pose in
+//! `poses` differs from the C-space's (the partner of a pair move or an
+//! exchange of places: two moves can cover a stop together that neither
+//! covers alone). Only the stops within reach of a moved object's new
+//! footprint are asked, with the objects moved in the C-space and back.
+bool EscapePolicy::covers_a_stop(const std::vector<Pose2>& poses, int moved) {
   if (!escape_ || !plan_every_ || open_stops_.empty()) return false;
-  geometry::Object o = round_.scene().objects[moved];
-  o.pose = to;
-  const geometry::Polygon fp = geometry::world_footprint(o);
-  // A goal pose's chair lies within gap + its diagonal of the stop.
+  // The moved objects' footprints where they go and where the C-space has
+  // them (the partner of a pair move is only in `poses`).
+  struct Moved {
+    int object;
+    geometry::Polygon to, from;
+  };
+  std::vector<Moved> group;
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const int k = static_cast<int>(i);
+    const Pose2& from = round_.cspace().object_pose(k);
+    if (k != moved && from == poses[i]) continue;
+    geometry::Object o = round_.scene().objects[i];
+    o.pose = poses[i];
+    Moved m{k, geometry::world_footprint(o), {}};
+    o.pose = from;
+    m.from = geometry::world_footprint(o);
+    group.push_back(std::move(m));
+  }
+  // A goal pose's chair lies within gap + its diagonal of the stop, so only
+  // an object within that reach of the stop, where it goes or where it
+  // was, changes its goal poses.
+  const auto reach_of = [&](int s) {
+    return round_.scene().objects[s].approach_or_default().gap + 0.01 +
+           std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
+  };
   std::vector<int> near;
+  std::vector<geometry::Polygon> near_at;
   for (int s : open_stops_) {
-    const geometry::Object& stop = round_.scene().objects[s];
-    const double reach = stop.approach_or_default().gap + 0.01 +
-                         std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
-    if (s == moved || geometry::polygon_distance(geometry::world_footprint(stop), fp) <= reach)
-      near.push_back(s);
+    const geometry::Polygon at = geometry::world_footprint(round_.scene().objects[s]);
+    const double reach = reach_of(s);
+    const bool close = std::any_of(group.begin(), group.end(), [&](const Moved& m) {
+      return m.object == s || geometry::polygon_distance(at, m.to) <= reach;
+    });
+    if (!close) continue;
+    near.push_back(s);
+    near_at.push_back(at);
+  }
+  if (near.empty()) return false;
+  // The moved objects that matter to a near stop enter the C-space, one
+  // trial inside the other.
+  std::vector<int> trial;
+  for (const Moved& m : group) {
+    bool matters = m.object == moved;
+    for (std::size_t n = 0; n < near.size() && !matters; ++n)
+      matters = m.object == near[n] ||
+                geometry::polygon_distance(near_at[n], m.to) <= reach_of(near[n]) ||
+                geometry::polygon_distance(near_at[n], m.from) <= reach_of(near[n]);
+    if (matters) trial.push_back(m.object);
   }
   bool covers = false;
-  if (!near.empty())
-    round_.trial(moved, to, [&] {
-      for (int s : near)
-        if (round_.goals_of(s).empty()) {
-          covers = true;
-          break;
-        }
-    });
+  std::function<void(std::size_t)> ask = [&](std::size_t g) {
+    if (g < trial.size()) {
+      const int k = trial[g];
+      round_.trial(k, poses[static_cast<std::size_t>(k)], [&] { ask(g + 1); });
+      return;
+    }
+    for (int s : near)
+      if (round_.goals_of(s).empty()) {
+        covers = true;
+        break;
+      }
+  };
+  ask(0);
   if (covers) ++covering_moves_;
   return covers;
 }
 
 //! One unblocking proposal for object `o`: a jump anywhere in the room's
 //! `box` with a quarter turn (1/2), a step of up to 1 m per axis (1/4) or a
-//! quarter turn (1/4), redrawn up to 50 times until valid; nullopt when
-//! no draw was.
+//! quarter turn (1/4), redrawn up to 50 times until valid. When no jump is
+//! valid and the object is wanted against a wall, up to 50 wall slots
+//! (wall_slot, drawn from `slots`) are tried: a bed that seals a corridor
+//! seldom fits at a uniform place of a crowded room, but often along a
+//! wall. nullopt when no draw was valid.
 std::optional<Pose2> EscapePolicy::unblock_move(int o, const std::vector<Pose2>& poses,
                                               const geometry::Box& box, std::mt19937_64& rng,
-                                              const ValidFn& valid) {
+                                              std::mt19937_64& slots, const ValidFn& valid) {
   constexpr double kQuarter = std::numbers::pi / 2;
+  constexpr int kDraws = 50;
   const Pose2 from = round_.scene().objects[o].pose;
+  const auto valid_at = [&](const Pose2& to) {
+    std::vector<Pose2> p = poses;
+    p[o] = to;
+    return valid(p, o);
+  };
   const double kind = uniform01(rng);
-  for (int attempt = 0; attempt < 50; ++attempt) {
+  for (int attempt = 0; attempt < kDraws; ++attempt) {
     Pose2 to = from;
     if (kind < 0.5) {
       to.x = box.xmin + uniform01(rng) * (box.xmax - box.xmin);
@@ -218,9 +276,13 @@ std::optional<Pose2> EscapePolicy::unblock_move(int o, const std::vector<Pose2>&
     } else {
       to.theta = geometry::wrap_angle(from.theta + (uniform01(rng) < 0.5 ? 1 : -1) * kQuarter);
     }
-    std::vector<Pose2> p = poses;
-    p[o] = to;
-    if (valid(p, o)) return to;
+    if (valid_at(to)) return to;
+  }
+  if (kind >= 0.5) return std::nullopt;
+  for (int attempt = 0; attempt < kDraws; ++attempt) {
+    const std::optional<Pose2> slot = wall_slot(round_.scene(), o, slots);
+    if (!slot) break;  // no wall preference
+    if (valid_at(*slot)) return slot;
   }
   return std::nullopt;
 }
@@ -249,6 +311,9 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
   stats.walled_after = stats.walled_before;
   if (walled.empty()) return false;
   std::mt19937_64 rng(splitmix64(seed ^ 0x756e'626c'6f63'6bULL));
+  // The wall slots' own stream: a layout whose jumps all find a valid
+  // place draws what it drew without them.
+  std::mt19937_64 slots(splitmix64(seed ^ 0x736c'6f74'73ULL));
   const geometry::Box box = geometry::bounding_box(scene_.room.polygon);
   bool changed = false;
   for (int k = 0; k < budget && !walled.empty(); ++k) {
@@ -256,7 +321,7 @@ bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
     const std::vector<int> focus = walled_focus(walled);
     if (focus.empty()) break;
     const int o = focus[uniform_index(rng, focus.size())];
-    const std::optional<Pose2> to = unblock_move(o, poses, box, rng, valid);
+    const std::optional<Pose2> to = unblock_move(o, poses, box, rng, slots, valid);
     ++stats.proposals;
     if (!to) continue;
     const Pose2 from = round_.scene().objects[o].pose;
@@ -300,8 +365,12 @@ geometry::Scene without_movable(const geometry::Scene& scene) {
 
 }  // namespace
 
-EscapePolicy::FixedOnly::FixedOnly(const geometry::Scene& s)
-    : scene(without_movable(s)), cspace(scene), gate(scene, cspace) {}
+EscapePolicy::FixedOnly::FixedOnly(const geometry::Scene& s,
+                                   const geometry::CSpaceOptions& cspace_options,
+                                   const planning::ReachGateOptions& gate_options)
+    : scene(without_movable(s)),
+      cspace(scene, cspace_options),
+      gate(scene, cspace, gate_options) {}
 
 //! The movable stops of `walled` that only moving themselves can bring
 //! within the door's reach: with every movable object taken out of the
@@ -317,7 +386,7 @@ std::vector<int> EscapePolicy::sealed_by_fixed(const std::vector<int>& walled) {
     if (!movable_[static_cast<std::size_t>(s)]) continue;
     const auto goals = round_.goals_of(s);
     if (goals.empty()) continue;
-    if (!fixed_only_) fixed_only_ = std::make_unique<FixedOnly>(scene_);
+    if (!fixed_only_) fixed_only_ = std::make_unique<FixedOnly>(scene_, cspace_options_, gate_options_);
     if (fixed_only_->gate.walls_off(goals)) out.push_back(s);
   }
   return out;

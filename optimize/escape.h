@@ -3,10 +3,12 @@
 // Beyond the paper: the design loop's escape from layouts that wall stops
 // off from the door (docs/optimize.md "Blocked layouts"), switched by the
 // planner configuration's `escape`:
-//   - unblock(): before the annealing, a greedy search on the free grid
-//     alone moves the objects that wall stops in until none is walled off;
-//   - covers_a_stop(): a move that leaves a stop which has a free goal pose
-//     without any is invalid;
+//   - unblock(): before the annealing (and again after it, when tours are
+//     unfound), a greedy search on the free grid alone moves the objects
+//     that wall stops in until none is walled off (jumps, steps and turns;
+//     wall slots for a wall object no jump of which lands);
+//   - covers_a_stop(): a move (of one object, or of a pair) that leaves a
+//     stop which has a free goal pose without any is invalid;
 //   - walling_objects(): the annealer's focus, the objects that most likely
 //     stand between the door and the stops unfound tours miss (and a
 //     walled stop itself when fixed objects alone seal its pocket).
@@ -34,15 +36,18 @@ class EscapePolicy {
   using ValidFn = std::function<bool(const std::vector<Pose2>& poses, int moved)>;
   using PlaceFn = std::function<void(int object, const Pose2& to)>;
 
-  //! `escape`: the switch; `plan_every`: tours are planned every iteration
-  //! (not with all path weights 0).
+  //! `options`: the switch (planner.escape) and the C-space and gate
+  //! options of the fixed-only gate; `plan_every`: tours are planned every
+  //! iteration (not with all path weights 0).
   EscapePolicy(const geometry::Scene& scene, TourRound& round,
                const std::vector<Sequence>& sequences, const std::vector<bool>& movable,
-               bool escape, bool plan_every);
+               const DesignOptions& options, bool plan_every);
 
-  //! True when moving object `moved` to `to` leaves a stop that has a free
-  //! goal pose now without any (counted in covering_moves()).
-  bool covers_a_stop(const Pose2& to, int moved);
+  //! True when the layout `poses` (object `moved` moved, and any other
+  //! object whose pose differs from the C-space's: the partner of a pair
+  //! move) leaves a stop that has a free goal pose now without any (counted
+  //! in covering_moves()).
+  bool covers_a_stop(const std::vector<Pose2>& poses, int moved);
   //! Recomputes the stops with a free goal pose in the current layout.
   void refresh_open_stops();
   //! The greedy unblocking of `poses` (the current layout, updated);
@@ -87,7 +92,7 @@ class EscapePolicy {
   std::vector<int> walled_off(const std::vector<int>& stops, double& total);
   std::optional<Pose2> unblock_move(int o, const std::vector<Pose2>& poses,
                                     const geometry::Box& box, std::mt19937_64& rng,
-                                    const ValidFn& valid);
+                                    std::mt19937_64& slots, const ValidFn& valid);
   std::vector<int> focus_for(const std::vector<int>& stops, bool in_grid);
   std::vector<int> near_targets(const std::vector<geometry::Polygon>& targets,
                                 const std::vector<int>& members, bool in_grid);
@@ -99,7 +104,8 @@ class EscapePolicy {
   //! The room with its fixed objects alone, and a reach gate over it
   //! (built at the first sealed_by_fixed() query; fixed objects never move).
   struct FixedOnly {
-    explicit FixedOnly(const geometry::Scene& scene);
+    FixedOnly(const geometry::Scene& scene, const geometry::CSpaceOptions& cspace_options,
+              const planning::ReachGateOptions& gate_options);
     geometry::Scene scene;
     geometry::CSpace cspace;
     planning::ReachGate gate;
@@ -110,6 +116,8 @@ class EscapePolicy {
   TourRound& round_;
   const std::vector<Sequence>& sequences_;
   const std::vector<bool>& movable_;
+  geometry::CSpaceOptions cspace_options_;
+  planning::ReachGateOptions gate_options_;
   bool escape_;
   bool plan_every_;
   std::vector<int> open_stops_;  //!< stops with a free goal pose in the current layout

@@ -196,11 +196,6 @@ void TourRound::move(int o, const Pose2& to) {
   ++version_;
 }
 
-void TourRound::sketch(int o, const Pose2& to) {
-  work_.objects[static_cast<std::size_t>(o)].pose = to;
-  ++version_;
-}
-
 void TourRound::place(const std::vector<Pose2>& poses) {
   for (std::size_t i = 0; i < poses.size(); ++i)
     if (cspace_.object_pose(static_cast<int>(i)) != poses[i]) move(static_cast<int>(i), poses[i]);

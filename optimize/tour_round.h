@@ -63,8 +63,8 @@ class TourRound {
   TourRound(const geometry::Scene& scene, const DesignOptions& options,
             const std::vector<Sequence>& sequences, const std::atomic<bool>* stop = nullptr);
 
-  //! The working layout. Every change goes through move(), sketch() or
-  //! place(), which count a layout version. The gate's fill is keyed on it;
+  //! The working layout. Every change goes through move() or place(),
+  //! which count a layout version. The gate's fill is keyed on it;
   //! the stop grades are a round's and follow it when the next round starts.
   const geometry::Scene& scene() const { return work_; }
   const geometry::CSpace& cspace() const { return cspace_; }
@@ -90,10 +90,6 @@ class TourRound {
   bool fails_leaving_the_door() const;
   //! Moves object `o` to `to` in the working scene and the C-space.
   void move(int o, const Pose2& to);
-  //! Moves object `o` in the working scene only (a chain that checks moves
-  //! without touring them: the preference arrangement); place() or move()
-  //! brings the C-space back in step.
-  void sketch(int o, const Pose2& to);
   //! Moves every object whose C-space pose differs from `poses` (scene order).
   void place(const std::vector<Pose2>& poses);
   //! The exact checks of object `moved` (object_violation) with every

@@ -278,6 +278,10 @@ TEST(DesignLoop, TheNearestWallsOfTheDoorsRegionAreFocused) {
   // was empty or missed them, and the designs ended at 2/10 and 0/10
   // tours. Now the bordering objects nearest each walled stop are the
   // focus (`hrspace design tests/optimize/zoo_1_408.json --seed 1`).
+  // In room 408 the unblocking must also move the bed that seals the door's
+  // wing: no uniform jump of it is valid in the crowded room, and without
+  // the wall slots it falls back on, 3 stops stay walled off after the
+  // unblocking and the design ends at 0/10 tours (1 stays walled now).
   for (const char* room : {"zoo_1_320.json", "zoo_1_408.json"}) {
     const Scene scene =
         geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/tests/optimize/" + room);
@@ -287,6 +291,7 @@ TEST(DesignLoop, TheNearestWallsOfTheDoorsRegionAreFocused) {
     std::printf("%s seed 1: tours %d/%d -> %d/%d\n", room, r.initial.tours_found,
                 r.initial.tours_total, r.final.tours_found, r.final.tours_total);
     EXPECT_EQ(r.initial.tours_found, 0) << room;
+    if (std::string(room) == "zoo_1_408.json") EXPECT_LE(r.unblock.walled_after, 1);
     EXPECT_TRUE(r.valid) << room;
     EXPECT_GE(r.final.tours_found, 9) << room;
     EXPECT_TRUE(layout_violation(r.layout).empty()) << room << ": " << layout_violation(r.layout);
