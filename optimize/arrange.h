@@ -58,7 +58,8 @@ struct ArrangeHooks {
   //! Exact validity of `poses` after moving object `moved`, with the other
   //! objects where the last set() put them. Required.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
-  //! Object `object` is now at `to` for valid()'s purposes (cheap: no C-space).
+  //! Object `object` is now at `to` for valid()'s purposes (the design moves
+  //! it in its C-space too, so that valid()'s covered-stop rule sees it).
   std::function<void(int object, const geometry::Pose2& to)> set;
   //! A preference move (AnnealCallbacks::preferred); may be unset.
   std::function<std::optional<geometry::Pose2>(const std::vector<geometry::Pose2>& poses,

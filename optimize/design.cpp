@@ -367,6 +367,7 @@ class DesignRun {
     const CostTerms t = replan(q);
     if (t.tours_found <= terms.tours_found) {
       round_.place(p);
+      escape_.refresh_open_stops();  // the unblocking left them at `q`'s
       return 0;
     }
     const int gained = t.tours_found - terms.tours_found;

@@ -138,7 +138,7 @@ struct DesignResult {
   //! (PlannerConfig::rescue): whether it ran, the tours it found, its time.
   struct Rescue {
     bool ran = false;
-    int tours_unfound = 0;  //!< by the annealing's best layout (the final one without `prefer`)
+    int tours_unfound = 0;  //!< by the best layout when it was unblocked before the polish, else the final one
     int tours_found = 0;    //!< by the lattice
     int unblocked = 0;      //!< by unblocking the walled-off stops again (before the polish, after it)
     double ms = 0.0;

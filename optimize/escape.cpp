@@ -203,14 +203,20 @@ bool EscapePolicy::covers_a_stop(const std::vector<Pose2>& poses, int moved) {
     return round_.scene().objects[s].approach_or_default().gap + 0.01 +
            std::hypot(scene_.wheelchair.length, scene_.wheelchair.width);
   };
+  // A moved stop's goal poses are where it goes.
   std::vector<int> near;
   std::vector<geometry::Polygon> near_at;
   for (int s : open_stops_) {
-    const geometry::Polygon at = geometry::world_footprint(round_.scene().objects[s]);
+    const auto in_group = std::find_if(group.begin(), group.end(),
+                                       [&](const Moved& m) { return m.object == s; });
+    const geometry::Polygon at = in_group != group.end()
+                                     ? in_group->to
+                                     : geometry::world_footprint(round_.scene().objects[s]);
     const double reach = reach_of(s);
-    const bool close = std::any_of(group.begin(), group.end(), [&](const Moved& m) {
-      return m.object == s || geometry::polygon_distance(at, m.to) <= reach;
-    });
+    const bool close = in_group != group.end() ||
+                       std::any_of(group.begin(), group.end(), [&](const Moved& m) {
+                         return geometry::polygon_distance(at, m.to) <= reach;
+                       });
     if (!close) continue;
     near.push_back(s);
     near_at.push_back(at);
@@ -278,25 +284,28 @@ std::optional<Pose2> EscapePolicy::unblock_move(int o, const std::vector<Pose2>&
     }
     if (valid_at(to)) return to;
   }
-  if (kind >= 0.5) return std::nullopt;
+  const geometry::Object& object = round_.scene().objects[o];
+  if (kind >= 0.5 || !object.wall || !object.wall->distance) return std::nullopt;
   for (int attempt = 0; attempt < kDraws; ++attempt) {
+    // nullopt: the wall drawn is shorter than the object.
     const std::optional<Pose2> slot = wall_slot(round_.scene(), o, slots);
-    if (!slot) break;  // no wall preference
-    if (valid_at(*slot)) return slot;
+    if (slot && valid_at(*slot)) return slot;
   }
   return std::nullopt;
 }
 
 //! Beyond the paper (docs/optimize.md "Blocked layouts"): when stops are
-//! walled off from the door in the input layout, a greedy search on the
-//! free grid alone (no tour is planned, a few milliseconds a proposal)
-//! moves the objects that wall them in (focus_for) until no stop of any
-//! sequence is walled off, or after kUnblockProposals proposals plus
-//! kUnblockPerObject per movable object (a room of 40 objects has more to
-//! move out of the way than one of 5). A
-//! proposal (jump with a quarter turn, step, or quarter turn, each redrawn
-//! until valid) is kept when the summed grade of the stops does not grow.
-//! Returns true when the layout changed; the annealing starts from it.
+//! walled off from the door in `poses` (the input layout, or the
+//! annealing's best one that misses tours), a greedy search on the free
+//! grid alone (no tour is planned, a few milliseconds a proposal) moves the
+//! objects that wall them in (focus_for) until no stop of any sequence is
+//! walled off, or after kUnblockProposals proposals plus kUnblockPerObject
+//! per movable object (a room of 40 objects has more to move out of the
+//! way than one of 5). A proposal (unblock_move: a jump with a quarter
+//! turn, a step or a quarter turn, each redrawn until valid; wall slots
+//! when no jump of a wall object lands) is kept when the summed grade of
+//! the stops does not grow. Returns true when the layout changed; the open
+//! stops (covers_a_stop) are then the changed layout's.
 bool EscapePolicy::unblock(std::vector<Pose2>& poses, std::uint64_t seed,
                          const std::atomic<bool>* stop, const ValidFn& valid,
                          const PlaceFn& place, DesignResult::Unblock& stats) {

@@ -52,7 +52,8 @@ class EscapePolicy {
   void refresh_open_stops();
   //! The greedy unblocking of `poses` (the current layout, updated);
   //! `valid` the exact checks of a move, `place` moves an object in the
-  //! working scene and C-space. True when the layout changed.
+  //! working scene and C-space. True when the layout changed; the open
+  //! stops (refresh_open_stops) are then the changed layout's.
   bool unblock(std::vector<Pose2>& poses, std::uint64_t seed, const std::atomic<bool>* stop,
                const ValidFn& valid, const PlaceFn& place, DesignResult::Unblock& stats);
   //! An input layout that is not valid (objects overlapping each other, the

@@ -63,6 +63,16 @@ constexpr std::size_t kSlideTries = 3;
 //! How many of the best exchanges of places are planned per object.
 constexpr std::size_t kSwapTries = 2;
 
+//! Places along the walls tried per wall object of a group turn, and how
+//! many of a turn's best placements are planned.
+constexpr int kPlaces = 6;
+constexpr std::size_t kTurnTries = 2;
+
+//! A group member that no longer fits once turned is shifted by up to this
+//! much (metres), in rings this far apart.
+constexpr double kNudge = 0.3;
+constexpr double kNudgeStep = 0.1;
+
 //! Headings this close to square (radians, about 0.06°) are left alone.
 constexpr double kSquareTolerance = 1e-3;
 
@@ -126,6 +136,62 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       }
     }
   };
+  // Object `k`, invalid at `pose` in `q`, shifted by up to kNudge metres
+  // (rings of kNudgeStep, eight directions each, the heading kept) to the
+  // first valid place; `q` and `pose` follow it. False when none is valid.
+  const auto nudge = [&](std::vector<geometry::Pose2>& q, int k, geometry::Pose2& pose) {
+    for (double r = kNudgeStep; r <= kNudge + 1e-9; r += kNudgeStep)
+      for (int d = 0; d < 8; ++d) {
+        const double a = d * std::numbers::pi / 4;
+        const geometry::Pose2 at{pose.x + r * std::cos(a), pose.y + r * std::sin(a), pose.theta};
+        q[static_cast<std::size_t>(k)] = at;
+        if (hooks.valid(q, k)) {
+          pose = at;
+          return true;
+        }
+      }
+    q[static_cast<std::size_t>(k)] = pose;
+    return false;
+  };
+  // Valid placements of a group turn `move` (from `poses`): the move
+  // settled (settle()), then, for each wall object of the move in turn, the
+  // move with that object at each valid place along the walls that give it
+  // the same heading (nearest first, at most kPlaces), the others settled:
+  // the nearest place can cost a tour that another keeps. A member that
+  // turns in place and no longer fits is nudged (nudge()). Each placement
+  // differs from the others; all are valid.
+  const auto placements = [&](const std::vector<geometry::Pose2>& from, const GroupMove& move) {
+    std::vector<GroupMove> out_moves;
+    const auto add = [&](GroupMove m) {
+      std::vector<geometry::Pose2> q = from;
+      for (const auto& [k, pose] : m) q[static_cast<std::size_t>(k)] = pose;
+      settle(q, m);
+      for (auto& [k, pose] : m)
+        if (!hooks.valid(q, k) && !nudge(q, k, pose)) return;
+      if (std::find(out_moves.begin(), out_moves.end(), m) == out_moves.end())
+        out_moves.push_back(std::move(m));
+    };
+    add(move);
+    for (std::size_t w = 0; w < move.size(); ++w) {
+      const int k = move[w].first;
+      const geometry::Object& o = scene.objects[static_cast<std::size_t>(k)];
+      if (!o.wall || !o.wall->distance) continue;
+      std::vector<geometry::Pose2> q = from;
+      for (const auto& [j, pose] : move) q[static_cast<std::size_t>(j)] = pose;
+      int places = 0;
+      for (const geometry::Pose2& at : wall_slides(scene, model, q, k, kSlideStep)) {
+        if (places >= kPlaces) break;
+        if (std::abs(geometry::wrap_angle(at.theta - move[w].second.theta)) > 1e-9) continue;
+        q[static_cast<std::size_t>(k)] = at;
+        if (!hooks.valid(q, k)) continue;
+        ++places;
+        GroupMove m = move;
+        m[w].second = at;
+        add(std::move(m));
+      }
+    }
+    return out_moves;
+  };
   // The valid candidates that score higher (wall slides, exchanges of
   // places): those clear of the tours' corridor first (they seldom cost a
   // tour), then the highest score, then the order found (the nearest
@@ -146,10 +212,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
       if (out.tried >= max_tries || (stop && stop->load())) break;
       ++out.tried;
-      if (try_moves(candidates[k].move, candidates[k].report, no_costlier)) {
-        ++out.kept;
-        return true;
-      }
+      if (try_moves(candidates[k].move, candidates[k].report, no_costlier)) return true;
     }
     return false;
   };
@@ -211,7 +274,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           slides.push_back({clear(object, to), std::move(next), {{object, to}}});
       }
       if (try_best(slides, kSlideTries, false)) {
-        ++out.slid;
+        ++out.kept, ++out.slid;
         continue;
       }
       if (out.tried >= max_tries || (stop && stop->load())) continue;
@@ -233,7 +296,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           exchanges.push_back({c, std::move(next), std::move(move)});
         }
       }
-      if (try_best(exchanges, kSwapTries, true)) ++out.swapped;
+      if (try_best(exchanges, kSwapTries, true)) ++out.kept, ++out.swapped;
     }
   }
   // Groups linked by relation angles turn as one body (a bed, the TV that
@@ -249,15 +312,17 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     };
     for (GroupMove move : group_turns(scene, model, poses, movable, group)) {
       if (!unmet() || out.tried >= max_tries || (stop && stop->load())) break;
-      std::vector<geometry::Pose2> q = poses;
-      for (const auto& [k, pose] : move) q[static_cast<std::size_t>(k)] = pose;
-      settle(q, move);
-      if (!std::all_of(move.begin(), move.end(), [&](const auto& m) { return hooks.valid(q, m.first); }))
-        continue;
-      PreferenceReport next = check_preferences(scene, model, q);
-      if (score(next) <= score(report)) continue;
-      ++out.tried;
-      if (try_moves(move, next)) ++out.turned;
+      std::vector<Candidate> turns;
+      for (GroupMove& placed : placements(poses, move)) {
+        std::vector<geometry::Pose2> q = poses;
+        for (const auto& [k, pose] : placed) q[static_cast<std::size_t>(k)] = pose;
+        PreferenceReport next = check_preferences(scene, model, q);
+        if (score(next) <= score(report)) continue;
+        const bool c = std::all_of(placed.begin(), placed.end(),
+                                   [&](const auto& m) { return clear(m.first, m.second); });
+        turns.push_back({c, std::move(next), std::move(placed)});
+      }
+      if (try_best(turns, kTurnTries, false)) ++out.turned;
     }
   }
   // Square to the room: an object whose heading no preference fixes is

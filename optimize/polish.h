@@ -15,7 +15,9 @@
 // Then each group of objects linked by relation angles (heading_groups) with
 // an unmet relation angle is tried turned as one body (group_turns; a wall
 // object whose spot is taken slides along the walls that give it the same
-// heading), on the same conditions.
+// heading, and is also tried at its next places there; a turned member that
+// no longer fits is nudged up to 30 cm), the best two placements planned, on
+// the same conditions.
 // Last, each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered).
 // The order is fixed (objects ascending, candidates in preferred_poses

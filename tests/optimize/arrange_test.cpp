@@ -446,6 +446,56 @@ PolishHooks exact_hooks(geometry::Scene& scratch) {
   return hooks;
 }
 
+// A bench along the wall wants a quarter turn to a fixed lamp. Turned in
+// place it crosses the wall; no single move finds another place (it wants
+// no wall, and nothing else moves). The group turn nudges it off the wall,
+// by at most 30 cm, and keeps it.
+TEST(Polish, AGroupMemberThatNoLongerFitsOnceTurnedIsNudged) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "bench",
+    "room": {"size": [6, 4]},
+    "door": {"center": [5.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "bench", "size": [1.0, 0.5], "pose": [3.0, 0.3, 0]},
+      {"id": "lamp", "size": [0.3, 0.3], "pose": [0.5, 3.5, 0], "fixed": true}
+    ],
+    "relations": [{"a": "bench", "b": "lamp", "angle": 1.5707963267948966}],
+    "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"lamp": 1.0}, "lamp": {"bench": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "bench");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable{true, false};
+  std::vector<Pose2> poses;
+  for (const auto& o : scene.objects) poses.push_back(o.pose);
+  ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
+  // Turned in place, the bench leaves the room.
+  geometry::Scene turned = scene;
+  turned.objects[0].pose.theta = std::numbers::pi / 2;
+  ASSERT_NE(object_violation(turned, 0), "");
+  geometry::Scene scratch = scene;
+  PolishHooks hooks = exact_hooks(scratch);
+  hooks.plan = [](const std::vector<Pose2>&) {
+    CostTerms t;
+    t.tours_total = t.tours_found = 2;
+    return t;
+  };
+  CostTerms terms;
+  terms.tours_total = terms.tours_found = 2;
+  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  EXPECT_EQ(r.kept, 0);
+  EXPECT_EQ(r.turned, 1);
+  EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
+  const double moved = std::hypot(poses[0].x - 3.0, poses[0].y - 0.3);
+  EXPECT_GT(moved, 0.0);
+  EXPECT_LE(moved, 0.3 + 1e-9);
+  geometry::Scene out = scene;
+  out.objects[0].pose = poses[0];
+  EXPECT_EQ(layout_violation(out), "");
+}
+
+
 // desks_scene(): the pose that meets the relation (on the line to the
 // lamp) overlaps `near`, and `far` has no wall to slide along; only
 // exchanging the two desks meets it. The polish finds the exchange, and `near` ends where

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The covered-stop rule (optimize/escape.h, covers_a_stop) against brute
 // force: for random moves of one or two objects near a stop of a shipped
-// room, the rule says "covers" exactly when some stop with a free goal pose
+// room (and of a partner beside where the first goes), the rule says "covers" exactly when some stop with a free goal pose
 // in the current layout has none in a C-space built afresh from the moved
 // layout (planning::goal_poses). Pairs are the polish's exchanges and pair
 // moves: two moves can cover a stop together that neither covers alone,
@@ -97,25 +97,32 @@ TEST(Escape, CoveredStopRuleAgreesWithBruteForceForSingleAndPairMoves) {
       const Pose2& s = scene.objects[static_cast<std::size_t>(stops[pick_stop(rng)])].pose;
       return Pose2{s.x + off(rng), s.y + off(rng), turn(rng)};
     };
+    std::uniform_real_distribution<double> beside(-1.0, 1.0);
     for (int n = 0; n < 400; ++n) {
       const int a = movers[pick(rng)];
       int b = movers[pick(rng)];
       while (b == a) b = movers[pick(rng)];
-      std::vector<Pose2> one = poses, two = poses;
-      one[static_cast<std::size_t>(a)] = two[static_cast<std::size_t>(a)] = near_a_stop();
-      two[static_cast<std::size_t>(b)] = near_a_stop();
-      std::vector<Pose2> other = poses;
-      other[static_cast<std::size_t>(b)] = two[static_cast<std::size_t>(b)];
+      const auto ia = static_cast<std::size_t>(a), ib = static_cast<std::size_t>(b);
+      // `a` alone, `b` alone, both near stops, and `b` within 1 m of where
+      // `a` goes (a moved stop whose new goal poses its partner takes).
+      std::vector<Pose2> one = poses, other = poses, two = poses, follow = poses;
+      one[ia] = two[ia] = follow[ia] = near_a_stop();
+      other[ib] = two[ib] = near_a_stop();
+      follow[ib] = Pose2{one[ia].x + beside(rng), one[ia].y + beside(rng), turn(rng)};
       const bool rule_one = escape.covers_a_stop(one, a);
-      const bool rule_two = escape.covers_a_stop(two, a);
       const bool rule_other = escape.covers_a_stop(other, b);
-      EXPECT_EQ(rule_one, covers_brute(scene, open, one)) << file << " case " << n << " single";
+      const bool rule_two = escape.covers_a_stop(two, a);
+      const bool rule_follow = escape.covers_a_stop(follow, a);
+      EXPECT_EQ(rule_one, covers_brute(scene, open, one)) << file << " case " << n << " a alone";
+      EXPECT_EQ(rule_other, covers_brute(scene, open, other)) << file << " case " << n << " b alone";
       EXPECT_EQ(rule_two, covers_brute(scene, open, two)) << file << " case " << n << " pair";
+      EXPECT_EQ(rule_follow, covers_brute(scene, open, follow))
+          << file << " case " << n << " b beside a";
       // The rule leaves the C-space as it was.
       for (std::size_t i = 0; i < poses.size(); ++i)
         ASSERT_EQ(round.cspace().object_pose(static_cast<int>(i)), poses[i]) << file;
-      cases += 2;
-      covered += rule_one + rule_two;
+      cases += 4;
+      covered += rule_one + rule_other + rule_two + rule_follow;
       pair_only += rule_two && !rule_one && !rule_other;
     }
   }
