@@ -435,6 +435,13 @@ geometry::Scene desks_scene() {
 
 //! Polish hooks whose validity is the exact layout checks on `scratch`;
 //! place() and kept() do nothing (plan() is the caller's).
+//! Terms with both of two tours found (a plan() that never loses a tour).
+CostTerms two_tours_found() {
+  CostTerms t;
+  t.tours_total = t.tours_found = 2;
+  return t;
+}
+
 PolishHooks exact_hooks(geometry::Scene& scratch) {
   PolishHooks hooks;
   hooks.valid = [&scratch](const std::vector<Pose2>& p, int moved) {
@@ -476,13 +483,8 @@ TEST(Polish, AGroupMemberThatNoLongerFitsOnceTurnedIsNudged) {
   ASSERT_NE(object_violation(turned, 0), "");
   geometry::Scene scratch = scene;
   PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) {
-    CostTerms t;
-    t.tours_total = t.tours_found = 2;
-    return t;
-  };
-  CostTerms terms;
-  terms.tours_total = terms.tours_found = 2;
+  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
+  CostTerms terms = two_tours_found();
   const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
   EXPECT_EQ(r.kept, 0);
   EXPECT_EQ(r.turned, 1);
@@ -510,13 +512,8 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
   ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
   geometry::Scene scratch = scene;
   PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) {
-    CostTerms t;
-    t.tours_total = t.tours_found = 2;
-    return t;
-  };
-  CostTerms terms;
-  terms.tours_total = terms.tours_found = 2;
+  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
+  CostTerms terms = two_tours_found();
   const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
   EXPECT_EQ(r.swapped, 1);
   EXPECT_EQ(r.slid, 0);
