@@ -41,9 +41,9 @@ std::pair<int, int> object_range(const Args& args) {
 }  // namespace
 
 int cmd_generate(const Argv& argv) {
-  const Args args(argv, {"out", "seed", "count", "objects", "shape", "threads"}, {"no-check"});
+  const Args args(argv, {"out", "seed", "count", "first", "objects", "shape", "threads"}, {"no-check"});
   const std::string usage =
-      "hrspace generate --out DIR [--seed S] [--count N] [--objects MIN-MAX] "
+      "hrspace generate --out DIR [--seed S] [--count N] [--first I] [--objects MIN-MAX] "
       "[--shape rect|l|u|flat|any] [--threads T] [--no-check]";
   if (args.help()) {
     std::cout
@@ -51,12 +51,18 @@ int cmd_generate(const Argv& argv) {
         << "\n\nWrites N random rooms (the room zoo) into DIR: zoo_S_I.json, the scene with its\n"
            "movable objects scrambled, and zoo_S_I.witness.json, the same scene in the planted\n"
            "layout that meets every preference and in which all M tours of the AO graph are\n"
-           "found by the baseline planner (checked; a failing plant is redrawn). Prints one\n"
-           "line per room: name, shape, objects, floor area, plants drawn, witness tours, time.\n"
+           "found by the baseline planner (checked; a failing plant is redrawn, and a room\n"
+           "whose 40 plants all fail is drawn again, up to 4 times). Prints one line per\n"
+           "room: name, shape, objects, floor area, room draws, plants drawn, witness tours,\n"
+           "time.\n"
            "The same seed gives the same files, whatever the number of threads.\n\n"
            "  --out DIR        output directory (created; required)\n"
-           "  --seed S         zoo seed (default 1); rooms are zoo_S_1 .. zoo_S_N\n"
+           "  --seed S         zoo seed (default 1); rooms are zoo_S_I .. zoo_S_(I+N-1)\n"
            "  --count N        rooms to write (default 10)\n"
+           "  --first I        index of the first room (default 1). A room depends only on\n"
+           "                   the seed, its index and --objects/--shape, so the generalization\n"
+           "                   study's room zoo_S_I of the bucket A-B is --first I --count 1\n"
+           "                   --objects A-B\n"
            "  --objects A-B    objects per room, partition walls included (default 4-40)\n"
            "  --shape K        rect, l, u, flat (2 or 3 rooms joined by openings) or any\n"
            "                   (default: drawn per room)\n"
@@ -72,6 +78,7 @@ int cmd_generate(const Argv& argv) {
   experiments::zoo::ZooOptions o;
   o.seed = static_cast<std::uint64_t>(args.integer("seed", 1, 0, 1000000000000L));
   const int count = static_cast<int>(args.integer("count", 10, 1, 100000));
+  const int first = static_cast<int>(args.integer("first", 1, 1, 1000000));
   std::tie(o.min_objects, o.max_objects) = object_range(args);
   if (const auto s = args.get("shape"); s && *s != "any") {
     o.shape = experiments::zoo::parse_shape(*s);
@@ -85,11 +92,12 @@ int cmd_generate(const Argv& argv) {
   if (ec || !std::filesystem::is_directory(dir))
     throw OutputError("--out '" + dir.string() + "': cannot create the directory");
   int failed = 0;
-  for (int i = 1; i <= count; ++i) {
+  for (int i = first; i < first + count; ++i) {
     const experiments::zoo::ZooRoom r = experiments::zoo::generate_room(o, i);
     if (r.scene.objects.empty()) {
-      std::printf("%-14s %-4s no plant fitted in %d attempts: nothing written\n", r.name.c_str(),
-                  experiments::zoo::shape_name(r.shape).c_str(), r.plant_attempts);
+      std::printf("%-14s %-4s no plant fitted in %d attempts (%d draws of the room): nothing written\n",
+                  r.name.c_str(), experiments::zoo::shape_name(r.shape).c_str(), r.plant_attempts,
+                  r.room_draws);
       ++failed;
       continue;
     }
@@ -108,10 +116,10 @@ int cmd_generate(const Argv& argv) {
       ++failed;
     }
     std::printf(
-        "%-14s %-4s objects %3zu  area %6.2f m^2  plants %2d (unplaced %d, untourable %d)  "
-        "tours %s  %.2f s\n",
+        "%-14s %-4s objects %3zu  area %6.2f m^2  draws %d  plants %2d (unplaced %d, "
+        "untourable %d)  tours %s  %.2f s\n",
         r.name.c_str(), experiments::zoo::shape_name(r.shape).c_str(), r.scene.objects.size(),
-        r.area, r.plant_attempts, r.unplaced, r.untourable, tours.c_str(), r.seconds);
+        r.area, r.room_draws, r.plant_attempts, r.unplaced, r.untourable, tours.c_str(), r.seconds);
     std::fflush(stdout);
   }
   return failed ? 1 : 0;

@@ -308,15 +308,12 @@ WitnessCheck check_layout(const Scene& scene, int threads) {
   return {r.initial.tours_found, r.initial.tours_total, r.initial.total()};
 }
 
-ZooRoom generate_room(const ZooOptions& options, int index) {
-  if (options.min_objects < 4 || options.max_objects < options.min_objects ||
-      options.max_objects > static_cast<int>(geometry::limits::kObjects))
-    throw InputError("zoo: object counts must satisfy 4 <= min <= max <= 100");
-  const auto t0 = std::chrono::steady_clock::now();
-  const std::uint64_t base = mix(options.seed, static_cast<std::uint64_t>(index));
+namespace {
+
+//! One draw of room `index`: the room-level choices from `base`, then up to
+//! max_plants plants. Adds its counts to `room`; true when a plant passed.
+bool draw_room(const ZooOptions& options, std::uint64_t base, ZooRoom& room) {
   std::mt19937_64 rng(base);
-  ZooRoom room;
-  room.name = "zoo_" + std::to_string(options.seed) + "_" + std::to_string(index);
   // Room-level choices: shape, object count, partitions, furniture, openness.
   Plan plan;
   plan.shape = options.shape ? *options.shape : static_cast<Shape>(uniform_index(rng, 4));
@@ -344,9 +341,10 @@ ZooRoom generate_room(const ZooOptions& options, int index) {
   // From cramped (2.6 times the furniture) to open (4.5 times).
   const double base_area = std::clamp(footprint * draw(rng, 2.6, 4.5), 9.0, 60.0);
   room.shape = plan.shape;
+  room.feasible = false;
 
   for (int attempt = 1; attempt <= options.max_plants; ++attempt) {
-    room.plant_attempts = attempt;
+    ++room.plant_attempts;
     std::mt19937_64 arng(mix(base, static_cast<std::uint64_t>(attempt)));
     const double area = base_area * std::pow(1.1, (attempt - 1) / 4);
     Floor floor = draw_floor(plan, area, arng);
@@ -383,7 +381,29 @@ ZooRoom generate_room(const ZooOptions& options, int index) {
       room.feasible = c.tours_total > 0 && c.tours_found == c.tours_total;
       room.untourable += !room.feasible;
     }
-    if (room.feasible) break;
+    if (room.feasible) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+ZooRoom generate_room(const ZooOptions& options, int index) {
+  if (options.min_objects < 4 || options.max_objects < options.min_objects ||
+      options.max_objects > static_cast<int>(geometry::limits::kObjects))
+    throw InputError("zoo: object counts must satisfy 4 <= min <= max <= 100");
+  if (options.max_plants < 1 || options.max_draws < 1)
+    throw InputError("zoo: max_plants and max_draws must be at least 1");
+  const auto t0 = std::chrono::steady_clock::now();
+  ZooRoom room;
+  room.name = "zoo_" + std::to_string(options.seed) + "_" + std::to_string(index);
+  // The first draw's stream is the room's own (seed, index); a room whose
+  // plants all fail is drawn again from a stream derived from it, so rooms
+  // that pass at the first draw do not depend on max_draws.
+  const std::uint64_t base = mix(options.seed, static_cast<std::uint64_t>(index));
+  for (int d = 1; d <= options.max_draws; ++d) {
+    room.room_draws = d;
+    if (draw_room(options, d == 1 ? base : mix(base, 0x9e3779b97f4a7c15ULL + d), room)) break;
   }
   room.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -19,7 +19,11 @@
 // of the planted layout are planned by the product's own design loop
 // (optimize::design with 0 iterations, the baseline planner). A plant whose
 // tours are not all found is redrawn (at most `max_plants` times; the floor
-// grows by 10 % after every fourth failure). The movable objects are then
+// grows by 10 % after every fourth failure). When every plant fails, the room
+// itself (shape, object count, furniture, AO graph) is drawn again, at most
+// `max_draws` times, so that a room of the zoo is feasible by construction:
+// a design that misses tours there is the design loop's failure, not the
+// room's. The movable objects are then
 // scrambled (random poses and headings inside the room, without overlap when
 // one is found) into the input layout; the planted layout is kept as the
 // *witness*, the same scene with the planted poses.
@@ -39,7 +43,7 @@ namespace hrs::experiments::zoo {
 //! Version of the generator's output: bumped whenever the rooms that a
 //! (seed, index, options) give change, so that stored results of the
 //! `generalization` study name the rooms they were made in.
-inline constexpr int kGeneratorVersion = 1;
+inline constexpr int kGeneratorVersion = 2;
 
 enum class Shape { kRect, kL, kU, kFlat };
 
@@ -54,7 +58,8 @@ struct ZooOptions {
   int max_objects = 40;
   std::optional<Shape> shape;        //!< nullopt: drawn per room
   bool check_tours = true;           //!< plan the witness's tours (false: geometry only)
-  int max_plants = 40;               //!< plants tried before giving up
+  int max_plants = 40;               //!< plants tried per draw of the room
+  int max_draws = 4;                 //!< draws of the room before giving up
   int threads = 0;                   //!< tour-planning threads of the check (0: all cores)
 };
 
@@ -64,7 +69,8 @@ struct ZooRoom {
   geometry::Scene scene;     //!< the input: movable objects scrambled
   geometry::Scene witness;   //!< the same scene with the planted poses
   double area = 0.0;         //!< floor area, m²
-  int plant_attempts = 0;    //!< plants drawn, the accepted one included
+  int room_draws = 0;        //!< draws of the room, the accepted one included
+  int plant_attempts = 0;    //!< plants drawn over all draws, the accepted one included
   int unplaced = 0;          //!< plants dropped because an object found no place
   int untourable = 0;        //!< plants dropped because a tour of the witness failed
   bool feasible = false;     //!< the witness's tours were all found (or not checked)
@@ -73,8 +79,8 @@ struct ZooRoom {
   double seconds = 0.0;                  //!< time taken to generate the room
 };
 
-//! Room `index` (1-based) of the zoo of `options.seed`. When no plant passes
-//! within max_plants, the last one is returned with feasible = false.
+//! Room `index` (1-based) of the zoo of `options.seed`. When no plant of any
+//! of the max_draws draws passes, the last one is returned with feasible = false.
 ZooRoom generate_room(const ZooOptions& options, int index);
 
 //! The witness check: the M tours of `scene`'s layout planned by

@@ -248,8 +248,11 @@ for f in "$tmp"/zoo/zoo_4_{1,2,3}.json "$tmp"/zoo/zoo_4_{1,2,3}.witness.json; do
 done
 check "generate again, two threads" 0 "$bin" generate --out "$tmp/zoo2" --seed 4 --count 3 --objects 4-9 --threads 2
 diff -r "$tmp/zoo" "$tmp/zoo2" >/dev/null || { echo "FAIL generate: same seed, other files"; fails=$((fails+1)); }
+check "generate one room by its index" 0 "$bin" generate --out "$tmp/zoo4" --seed 4 --first 3 --count 1 --objects 4-9 --threads 1 --no-check
+[ "$(ls "$tmp/zoo4")" = "$(printf 'zoo_4_3.json\nzoo_4_3.witness.json')" ] || { echo "FAIL generate --first: expected only zoo_4_3"; fails=$((fails+1)); }
+cmp -s "$tmp/zoo4/zoo_4_3.json" "$tmp/zoo/zoo_4_3.json" || { echo "FAIL generate --first: zoo_4_3 differs from the third room of --count 3"; fails=$((fails+1)); }
 check "generate help" 0 "$bin" generate --help
-for bad in "--objects 3-9" "--objects 9-5" "--objects x" "--objects 4-101" "--shape oval" "--count 0" "--seed -1"; do
+for bad in "--objects 3-9" "--objects 9-5" "--objects x" "--objects 4-101" "--shape oval" "--count 0" "--first 0" "--seed -1"; do
   # shellcheck disable=SC2086
   check "generate $bad" 2 "$bin" generate --out "$tmp/zoo3" $bad
   expect_err "generate $bad names the option" "${bad%% *}"

@@ -91,6 +91,53 @@ TEST(RoomZoo, CheckedRoomsAreTheSameWhateverTheThreads) {
   EXPECT_EQ(one.witness_cost, two.witness_cost);
 }
 
+// A room whose plants all fail is drawn again; a room that passes at its
+// first draw does not depend on how many draws are allowed. One plant per
+// draw makes failures common (an object that finds no place).
+TEST(RoomZoo, ARoomWhosePlantsAllFailIsDrawnAgainAndOthersStayTheSame) {
+  int redrawn = 0, rescued = 0, first_draw = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    for (int index = 1; index <= 10; ++index) {
+      ZooOptions once = geometry_only(seed, 25, 40);
+      once.max_plants = 1;
+      once.max_draws = 1;
+      ZooOptions more = once;
+      more.max_draws = 6;
+      const ZooRoom a = generate_room(once, index), b = generate_room(more, index);
+      SCOPED_TRACE(a.name);
+      EXPECT_EQ(a.room_draws, 1);
+      if (a.feasible) {
+        ++first_draw;
+        EXPECT_EQ(b.room_draws, 1);
+        EXPECT_EQ(geometry::write_scene(a.scene), geometry::write_scene(b.scene));
+        EXPECT_EQ(geometry::write_scene(a.witness), geometry::write_scene(b.witness));
+        continue;
+      }
+      ++redrawn;
+      EXPECT_GT(b.room_draws, 1);
+      EXPECT_EQ(b.plant_attempts, b.room_draws);  // one plant per draw
+      if (!b.feasible) continue;
+      ++rescued;
+      EXPECT_NE(geometry::write_scene(a.witness), geometry::write_scene(b.witness));
+      EXPECT_NO_THROW(reread(b.scene, b.name + ".json"));
+      EXPECT_NO_THROW(reread(b.witness, b.name + ".witness.json"));
+      const int n = static_cast<int>(b.scene.objects.size());
+      EXPECT_GE(n, 25);
+      EXPECT_LE(n, 40);
+    }
+  }
+  // Both cases occur, and most failed rooms pass at a later draw.
+  EXPECT_GT(first_draw, 0);
+  EXPECT_GT(redrawn, 0);
+  EXPECT_GT(2 * rescued, redrawn);
+  const ZooOptions bad = [] {
+    ZooOptions o = geometry_only(1, 4, 8);
+    o.max_draws = 0;
+    return o;
+  }();
+  EXPECT_THROW(generate_room(bad, 1), hrs::InputError);
+}
+
 TEST(RoomZoo, ShapesAreWhatWasAskedFor) {
   const std::map<Shape, std::size_t> vertices = {
       {Shape::kRect, 4}, {Shape::kL, 6}, {Shape::kU, 8}, {Shape::kFlat, 4}};
@@ -154,7 +201,9 @@ TEST(RoomZoo, WitnessMeetsEveryPreferenceAndInputIsScrambled) {
       poses.push_back(o.pose);
       const auto& in = r.scene.objects[i];
       EXPECT_EQ(in.id, o.id);
-      if (o.fixed) EXPECT_EQ(in.pose, o.pose);
+      if (o.fixed) {
+        EXPECT_EQ(in.pose, o.pose);
+      }
       moved += !(in.pose == o.pose);
       if (!o.wall) continue;
       ++walls;
