@@ -408,7 +408,7 @@ def tradeoff_section(root):
     labels, weightings = distinct(runs, "label"), distinct(runs, "weighting")
     lines = [
         "",
-        "## Beyond the paper: preferences against tours (the trade-off study)",
+        TRADEOFF_HEADING,
         "",
         f"The `tradeoff` study at commit `{', '.join(commits)}`: default-preset designs "
         f"({runs[0].get('iterations', '?')} iterations) of the shipped rooms and of four zoo rooms (9-16 objects) at the scene's "
@@ -438,6 +438,10 @@ def tradeoff_section(root):
     return lines
 
 
+ZOO_HEADING = "## Beyond the paper: rooms nobody tuned for (the room zoo)"
+TRADEOFF_HEADING = "## Beyond the paper: preferences against tours (the trade-off study)"
+
+
 def zoo_section(root):
     """REPRODUCTION.md lines on the room zoo (beyond the paper): per bucket and
     planner, tours, preferences, the search gap to the planted witness, time."""
@@ -445,12 +449,14 @@ def zoo_section(root):
     if not runs or "prefs_share" not in runs[0]:
         return []
     commits = sorted({r.get("commit", "?") for r in runs})
+    cpus = sorted({r.get("cpu", "?") for r in runs})
     buckets = distinct(runs, "bucket")
     lines = [
         "",
-        "## Beyond the paper: rooms nobody tuned for (the room zoo)",
+        ZOO_HEADING,
         "",
-        f"The `generalization` study at commit `{', '.join(commits)}`: zoo rooms (`hrspace "
+        f"The `generalization` study at commit `{', '.join(commits)}` (machine: "
+        f"{', '.join(cpus)}): zoo rooms (`hrspace "
         "generate`, zoo seed 1) planted with a layout whose tours all exist and that meets "
         "every preference (the witness), then scrambled; one design per room and planner, "
         f"{runs[0].get('iterations', '?')} iterations, one planning thread, two designs at a time. Targets (issues): "
@@ -1074,6 +1080,64 @@ def write_reproduction(root, path, command):
     return rows
 
 
+# The studies beyond the paper have a section of their own in REPRODUCTION.md,
+# so one of them can be run again and published alone (--only): its figure,
+# summary and section replace the published ones, the rest stays as the full
+# run left it. Each section names the commit and machine it was made at, which
+# is what `scripts/reproduce.sh --status` reads.
+SECTIONS = {
+    "generalization": (ZOO_HEADING, zoo_section, fig_generalization),
+    "tradeoff": (TRADEOFF_HEADING, tradeoff_section, fig_tradeoff),
+}
+
+
+def splice_section(text, heading, lines):
+    """`text` with the section that starts at `heading` (up to the next
+    second-level heading) replaced by `lines`, or `lines` appended."""
+    old = text.split("\n")
+    new = list(lines)
+    while new and new[0] == "":
+        new = new[1:]
+    while new and new[-1] == "":
+        new = new[:-1]
+    if heading in old:
+        i = old.index(heading)
+        j = next((k for k in range(i + 1, len(old)) if old[k].startswith("## ")), len(old))
+        tail = old[j:]
+        body = old[:i] + new + ([""] if tail else [])
+        return "\n".join(body + tail).rstrip("\n") + "\n"
+    return text.rstrip("\n") + "\n\n" + "\n".join(new) + "\n"
+
+
+def publish_only(out, studies, figs, here):
+    """Publishes the named studies' figures, summaries and sections alone."""
+    rep = os.path.join(here, "REPRODUCTION.md")
+    if not os.path.exists(rep):
+        print(f"plot.py: {rep} is missing: publish the full run first", file=sys.stderr)
+        return 2
+    with open(rep) as f:
+        text = f.read()
+    for study in studies:
+        heading, section, fig = SECTIONS[study]
+        lines = section(out)
+        if not lines:
+            print(f"plot.py: {out}/{study}/runs.csv has no runs to publish", file=sys.stderr)
+            return 2
+        text = splice_section(text, heading, lines)
+        os.makedirs(os.path.join(here, "figures"), exist_ok=True)
+        for p in fig(out, figs):
+            shutil.copy(p, os.path.join(here, "figures", os.path.basename(p)))
+        os.makedirs(os.path.join(here, "tables"), exist_ok=True)
+        shutil.copy(os.path.join(out, study, "summary.csv"),
+                    os.path.join(here, "tables", f"{study}_summary.csv"))
+    tmp = rep + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, rep)
+    print(f"plot.py: published {', '.join(studies)} alone into {here}")
+    return 0
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("out", help="root directory the harness wrote")
@@ -1081,11 +1145,27 @@ def main():
                     help="copy figures, summaries and REPRODUCTION.md into paper_figures/")
     ap.add_argument("--command", default="scripts/reproduce.sh",
                     help="the command that made OUT (written into REPRODUCTION.md)")
+    ap.add_argument("--only", action="append", default=[], choices=sorted(SECTIONS),
+                    help="with --publish: publish only this study (repeatable): its figure, "
+                         "summary and section of REPRODUCTION.md replace the published ones")
     a = ap.parse_args()
     if not os.path.isdir(a.out):
         print(f"plot.py: {a.out}: not a directory (run scripts/reproduce.sh first)", file=sys.stderr)
         return 2
     figs = os.path.join(a.out, "figures")
+    if a.publish:
+        quick = [study for study in sorted(os.listdir(a.out))
+                 if any(r.get("quick") == "1"
+                        for r in read_csv(os.path.join(a.out, study, "runs.csv")) or [])]
+        if quick:
+            print(f"plot.py: {a.out}: smoke runs (--quick) in {', '.join(quick)}: "
+                  "not published", file=sys.stderr)
+            return 2
+    if a.only:
+        if not a.publish:
+            print("plot.py: --only needs --publish", file=sys.stderr)
+            return 2
+        return publish_only(a.out, a.only, figs, os.path.dirname(os.path.abspath(__file__)))
     written = []
     for f in (fig_timing, fig_trace, fig_rs_decomposition, fig_rrt_iterations, fig_sensitivity,
               fig_small_room, fig_ao_graph, fig_designs, fig_method, fig_generalization,

@@ -28,11 +28,17 @@ other options, scenes or code is refused (exit 2), never mixed in.
   --out DIR    output root (default out/reproduce, or out/reproduce-quick)
   --jobs N     designs run at once, one thread each (default 1)
   --publish    also copy the figures, summaries and REPRODUCTION.md into
-               paper_figures/ (what README and docs embed)
+               paper_figures/ (what README and docs embed). With named studies,
+               only generalization and tradeoff, whose sections of REPRODUCTION.md
+               stand alone: their figure, summary and section replace the
+               published ones and name their own commit. A --quick run is
+               never published.
   --status     only say whether paper_figures/ is current: "current" (exit 0) when
                the code under geometry/, rs/, planning/ and optimize/ at every
                commit REPRODUCTION.md names (the run's, and any study run on
-               its own) equals HEAD's, else "stale" (exit 1)
+               its own) equals HEAD's, and the room zoo (experiments/room_zoo*,
+               studies_generalization.cpp) at the commits of the generalization
+               and tradeoff studies too; else "stale" (exit 1)
   STUDY ...    timing rs_decomposition rrt_iterations sensitivity small_room ao_graph designs
                hard_rooms design_loop method generalization tradeoff
 
@@ -77,15 +83,35 @@ if [ "${status_only:-0}" = 1 ]; then
     changed=$(git -C "$root" diff --name-only "$c" HEAD -- geometry rs planning optimize | wc -l)
     [ "$changed" = 0 ] || stale+=("$c ($changed file(s) changed since)")
   done
+  # The zoo studies also depend on the rooms the generator draws.
+  zoo_made=$({ grep -o 'The `\(generalization\|tradeoff\)` study at commit `[^`]*`' "$rep" || true; } |
+             sed 's/.*`\(.*\)`$/\1/' | awk '!seen[$0]++')
+  for c in $zoo_made; do
+    changed=$(git -C "$root" diff --name-only "$c" HEAD -- experiments/room_zoo.h experiments/room_zoo.cpp \
+              experiments/room_zoo_plant.cpp experiments/studies_generalization.cpp | wc -l)
+    [ "$changed" = 0 ] || stale+=("$c (the room zoo: $changed file(s) changed since)")
+  done
   if [ ${#stale[@]} = 0 ]; then
     echo "reproduce.sh: current: paper_figures/ was made at $(echo $made | tr ' ' ','); geometry/, rs/, planning/ and optimize/ are unchanged since"
     exit 0
   fi
-  echo "reproduce.sh: stale: results made at ${stale[*]} under geometry/, rs/, planning/, optimize/ (REPRODUCTION.md names which studies; run scripts/reproduce.sh --jobs 2 --publish)"
+  echo "reproduce.sh: stale: results made at ${stale[*]} under geometry/, rs/, planning/, optimize/ or the room zoo (REPRODUCTION.md names which studies; run scripts/reproduce.sh --jobs 2 --publish, or --publish generalization tradeoff for the zoo's)"
   exit 1
 fi
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || { echo "reproduce.sh: --jobs '$jobs': expected a whole number >= 1" >&2; exit 2; }
 [ ${#studies[@]} -gt 0 ] || studies=(all)
+only=()
+if [ ${#publish[@]} -gt 0 ]; then
+  [ ${#quick[@]} = 0 ] || { echo "reproduce.sh: --quick with --publish: a smoke run is never published" >&2; exit 2; }
+  if [ "${studies[*]}" != all ]; then
+    for s in "${studies[@]}"; do
+      case "$s" in
+        generalization|tradeoff) only+=(--only "$s") ;;
+        *) echo "reproduce.sh: --publish $s: a study of the paper is published by the full run (no STUDY); alone, only generalization and tradeoff" >&2; exit 2 ;;
+      esac
+    done
+  fi
+fi
 if [ -z "$out" ]; then
   # A smoke run never shares its default root with the full run.
   if [ ${#quick[@]} -gt 0 ]; then out="$root/out/reproduce-quick"; else out="$root/out/reproduce"; fi
@@ -110,7 +136,7 @@ status=0
 for s in "${studies[@]}"; do
   "$bin" experiment "$s" --out "$out" --jobs "$jobs" "${quick[@]}" || { status=$?; break; }
 done
-"$python" "$root/paper_figures/plot.py" "$out" --command "$command" "${publish[@]}"
+"$python" "$root/paper_figures/plot.py" "$out" --command "$command" "${publish[@]}" "${only[@]}"
 end=$(date +%s)
 echo "reproduce.sh: $((end - start)) s wall time on $(nproc) cores; outputs in $out"
 exit $status

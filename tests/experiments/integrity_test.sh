@@ -143,5 +143,38 @@ else
 fi
 fake/scripts/reproduce.sh --help | grep -q "out/reproduce-quick" || fail "reproduce.sh --help lacks out/reproduce-quick"
 
+# 10. reproduce.sh --publish: never a smoke run; with named studies only the
+# ones whose section of REPRODUCTION.md stands alone, passed on as --only.
+printf 'import sys\nprint("plot", " ".join(sys.argv[1:]))\n' >fake/paper_figures/plot.py
+expect "--quick --publish refused" 2 "smoke run is never published" \
+  env HRSPACE_BIN="$tmp/stub" fake/scripts/reproduce.sh --quick --publish generalization
+expect "--publish of a paper study alone refused" 2 "--publish timing: a study of the paper" \
+  env HRSPACE_BIN="$tmp/stub" fake/scripts/reproduce.sh --publish generalization timing
+expect "--publish generalization alone" 0 "" \
+  env HRSPACE_BIN="$tmp/stub" fake/scripts/reproduce.sh --publish generalization tradeoff
+grep -q -- "--publish --only generalization --only tradeoff" "$tmp/out" ||
+  { fail "reproduce.sh --publish STUDY did not pass --only:"; cat "$tmp/out"; }
+expect "--publish of the full run" 0 "" env HRSPACE_BIN="$tmp/stub" fake/scripts/reproduce.sh --publish
+grep -q -- "--only" "$tmp/out" && { fail "the full run published with --only:"; cat "$tmp/out"; }
+
+# 11. plot.py refuses to publish smoke runs, and --only replaces one section.
+mkdir -p P/generalization
+printf 'key,quick\na,1\n' >P/generalization/runs.csv
+expect "plot.py --publish of a smoke run refused" 2 "smoke runs .* not published" \
+  /usr/bin/python3 "$src/paper_figures/plot.py" P --publish
+/usr/bin/python3 - "$src/paper_figures" <<'PY' || fail "plot.py splice_section"
+import sys
+sys.path.insert(0, sys.argv[1])
+import plot
+z, t = plot.ZOO_HEADING, plot.TRADEOFF_HEADING
+doc = f"# R\n\n| claims |\n\n{z}\n\nold zoo\n\n{t}\n\nold tradeoff\n"
+new = plot.splice_section(doc, z, ["", z, "", "new zoo"])
+assert new == f"# R\n\n| claims |\n\n{z}\n\nnew zoo\n\n{t}\n\nold tradeoff\n", new
+new = plot.splice_section(new, t, ["", t, "", "new tradeoff"])
+assert new.endswith(f"{t}\n\nnew tradeoff\n") and "new zoo" in new, new
+assert plot.splice_section("# R\n", z, ["", z, "", "x"]) == f"# R\n\n{z}\n\nx\n"
+print("ok   plot.py splice_section")
+PY
+
 [ "$fails" = 0 ] && echo "integrity_test: all checks passed" || echo "integrity_test: $fails failure(s)"
 exit $((fails > 0))
