@@ -399,7 +399,7 @@ def fig_tradeoff(root, figs):
     return save(fig, figs, "tradeoff")
 
 
-def tradeoff_section(root):
+def tradeoff_section(root, command=None):
     """REPRODUCTION.md lines on the trade-off study: per room and weighting."""
     runs = read_csv(os.path.join(root, "tradeoff", "runs.csv"))
     if not runs:
@@ -410,7 +410,7 @@ def tradeoff_section(root):
         "",
         TRADEOFF_HEADING,
         "",
-        f"The `tradeoff` study at commit `{', '.join(commits)}`: default-preset designs "
+        f"The `tradeoff` study at commit `{', '.join(commits)}`{alone(command)}: default-preset designs "
         f"({runs[0].get('iterations', '?')} iterations) of the shipped rooms and of four zoo rooms (9-16 objects) at the scene's "
         "weights and with the interior (preference) or path weights scaled. Per room and "
         "weighting over the seeds: preference terms met, tours found (mean), mean tour length, "
@@ -438,11 +438,16 @@ def tradeoff_section(root):
     return lines
 
 
+def alone(command):
+    """Words naming the command of a study published alone (--only)."""
+    return f", run and published alone by `{command}`" if command else ""
+
+
 ZOO_HEADING = "## Beyond the paper: rooms nobody tuned for (the room zoo)"
 TRADEOFF_HEADING = "## Beyond the paper: preferences against tours (the trade-off study)"
 
 
-def zoo_section(root):
+def zoo_section(root, command=None):
     """REPRODUCTION.md lines on the room zoo (beyond the paper): per bucket and
     planner, tours, preferences, the search gap to the planted witness, time."""
     runs = read_csv(os.path.join(root, "generalization", "runs.csv"))
@@ -456,7 +461,7 @@ def zoo_section(root):
         ZOO_HEADING,
         "",
         f"The `generalization` study at commit `{', '.join(commits)}` (machine: "
-        f"{', '.join(cpus)}): zoo rooms (`hrspace "
+        f"{', '.join(cpus)}){alone(command)}: zoo rooms (`hrspace "
         "generate`, zoo seed 1) planted with a layout whose tours all exist and that meets "
         "every preference (the witness), then scrambled; one design per room and planner, "
         f"{runs[0].get('iterations', '?')} iterations, one planning thread, two designs at a time. Targets (issues): "
@@ -1109,7 +1114,7 @@ def splice_section(text, heading, lines):
     return text.rstrip("\n") + "\n\n" + "\n".join(new) + "\n"
 
 
-def publish_only(out, studies, figs, here):
+def publish_only(out, studies, figs, here, command):
     """Publishes the named studies' figures, summaries and sections alone."""
     rep = os.path.join(here, "REPRODUCTION.md")
     if not os.path.exists(rep):
@@ -1119,7 +1124,7 @@ def publish_only(out, studies, figs, here):
         text = f.read()
     for study in studies:
         heading, section, fig = SECTIONS[study]
-        lines = section(out)
+        lines = section(out, command)
         if not lines:
             print(f"plot.py: {out}/{study}/runs.csv has no runs to publish", file=sys.stderr)
             return 2
@@ -1165,7 +1170,8 @@ def main():
         if not a.publish:
             print("plot.py: --only needs --publish", file=sys.stderr)
             return 2
-        return publish_only(a.out, a.only, figs, os.path.dirname(os.path.abspath(__file__)))
+        return publish_only(a.out, a.only, figs, os.path.dirname(os.path.abspath(__file__)),
+                            a.command)
     written = []
     for f in (fig_timing, fig_trace, fig_rs_decomposition, fig_rrt_iterations, fig_sensitivity,
               fig_small_room, fig_ao_graph, fig_designs, fig_method, fig_generalization,
