@@ -175,6 +175,37 @@ assert new.endswith(f"{t}\n\nnew tradeoff\n") and "new zoo" in new, new
 assert plot.splice_section("# R\n", z, ["", z, "", "x"]) == f"# R\n\n{z}\n\nx\n"
 print("ok   plot.py splice_section")
 PY
+# plot.py --publish --only generalization on a copy of paper_figures/: the
+# zoo section, figure and summary are replaced; the claims and the
+# tradeoff section stay byte for byte.
+mkdir -p pf Q/generalization
+cp "$src"/paper_figures/*.py pf/
+h=study,key,bucket,zoo_seed,index,seed,planner,version,commit,iterations,threads,quick,total_s,planning_s
+h=$h,tours_found,tours_total,objects,success,witness_tourable,cost_le_witness,prefs_met,prefs_total
+h=$h,prefs_share,worst_angle_deg,angle_over_20,cpu
+{
+  echo "$h"
+  echo "generalization,g1,4-8,1,101,1,all,0,abc123,700,1,0,4.5,4.0,10,10,8,1,1,1,11,12,0.92,3,0,CPU-X"
+  echo "generalization,g2,4-8,1,101,1,baseline,0,abc123,700,1,0,9.5,9.0,9,10,8,1,1,0,10,12,0.83,25,1,CPU-X"
+} >Q/generalization/runs.csv
+printf 'bucket,planner,n\n4-8,all,1\n' >Q/generalization/summary.csv
+{
+  printf '# R\n\n| claim |\n|---|\n| a claim |\n\n'
+  printf '%s\n\nold zoo\n\n' "## Beyond the paper: rooms nobody tuned for (the room zoo)"
+  printf '%s\n\nold tradeoff\n' "## Beyond the paper: preferences against tours (the trade-off study)"
+} >pf/REPRODUCTION.md
+cp pf/REPRODUCTION.md before.md
+expect "plot.py --publish --only generalization" 0 "" \
+  /usr/bin/python3 pf/plot.py Q --publish --only generalization --command "the command"
+grep -q 'The `generalization` study at commit `abc123` (machine: CPU-X), run and published alone by `the command`' \
+  pf/REPRODUCTION.md || { fail "--only: the zoo section does not name commit, machine and command"; cat pf/REPRODUCTION.md; }
+grep -q "old zoo" pf/REPRODUCTION.md && fail "--only: the old zoo section is still there"
+[ "$(sed -n '1,6p' pf/REPRODUCTION.md)" = "$(sed -n '1,6p' before.md)" ] || fail "--only: the claims changed"
+[ "$(tail -3 pf/REPRODUCTION.md)" = "$(tail -3 before.md)" ] || fail "--only: the tradeoff section changed"
+cmp -s Q/generalization/summary.csv pf/tables/generalization_summary.csv || fail "--only: summary not published"
+[ -s pf/figures/generalization.svg ] || fail "--only: figure not published"
+expect "plot.py --only without --publish refused" 2 "--only needs --publish" \
+  /usr/bin/python3 pf/plot.py Q --only generalization
 
 [ "$fails" = 0 ] && echo "integrity_test: all checks passed" || echo "integrity_test: $fails failure(s)"
 exit $((fails > 0))
