@@ -92,7 +92,7 @@ if [ "${status_only:-0}" = 1 ]; then
     [ "$changed" = 0 ] || stale+=("$c (the room zoo: $changed file(s) changed since)")
   done
   if [ ${#stale[@]} = 0 ]; then
-    echo "reproduce.sh: current: paper_figures/ was made at $(echo $made | tr ' ' ','); geometry/, rs/, planning/ and optimize/ are unchanged since"
+    echo "reproduce.sh: current: paper_figures/ was made at $(echo $made | tr ' ' ','); geometry/, rs/, planning/ and optimize/ are unchanged since${zoo_made:+, and the room zoo since the commits of the zoo studies}"
     exit 0
   fi
   echo "reproduce.sh: stale: results made at ${stale[*]} under geometry/, rs/, planning/, optimize/ or the room zoo (REPRODUCTION.md names which studies; run scripts/reproduce.sh --jobs 2 --publish, or --publish generalization tradeoff for the zoo's)"
