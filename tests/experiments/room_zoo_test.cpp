@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <string>
 
@@ -96,8 +97,8 @@ TEST(RoomZoo, CheckedRoomsAreTheSameWhateverTheThreads) {
 // draw makes failures common (an object that finds no place).
 TEST(RoomZoo, ARoomWhosePlantsAllFailIsDrawnAgainAndOthersStayTheSame) {
   int redrawn = 0, rescued = 0, first_draw = 0;
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    for (int index = 1; index <= 10; ++index) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    for (int index = 1; index <= 8; ++index) {
       ZooOptions once = geometry_only(seed, 25, 40);
       once.max_plants = 1;
       once.max_draws = 1;
@@ -127,6 +128,8 @@ TEST(RoomZoo, ARoomWhosePlantsAllFailIsDrawnAgainAndOthersStayTheSame) {
     }
   }
   // Both cases occur, and most failed rooms pass at a later draw.
+  std::printf("40 rooms at one plant per draw: %d pass at the first draw, %d redrawn, %d of them pass\n",
+              first_draw, redrawn, rescued);
   EXPECT_GT(first_draw, 0);
   EXPECT_GT(redrawn, 0);
   EXPECT_GT(2 * rescued, redrawn);
