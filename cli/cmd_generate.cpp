@@ -46,13 +46,15 @@ int cmd_generate(const Argv& argv) {
       "hrspace generate --out DIR [--seed S] [--count N] [--first I] [--objects MIN-MAX] "
       "[--shape rect|l|u|flat|any] [--threads T] [--no-check]";
   if (args.help()) {
+    const experiments::zoo::ZooOptions defaults;
     std::cout
         << "usage: " << usage
         << "\n\nWrites N random rooms (the room zoo) into DIR: zoo_S_I.json, the scene with its\n"
            "movable objects scrambled, and zoo_S_I.witness.json, the same scene in the planted\n"
            "layout that meets every preference and in which all M tours of the AO graph are\n"
            "found by the baseline planner (checked; a failing plant is redrawn, and a room\n"
-           "whose 40 plants all fail is drawn again, up to 4 times). Prints one line per\n"
+           "whose " << defaults.max_plants << " plants all fail is drawn again, up to "
+        << defaults.max_draws << " draws). Prints one line per\n"
            "room: name, shape, objects, floor area, room draws, plants drawn, witness tours,\n"
            "time.\n"
            "The same seed gives the same files, whatever the number of threads.\n\n"

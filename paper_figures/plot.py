@@ -1114,6 +1114,19 @@ def splice_section(text, heading, lines):
     return text.rstrip("\n") + "\n\n" + "\n".join(new) + "\n"
 
 
+def copy_published(here, figures, out, studies):
+    """Copies `figures` and the summary.csv of each of `studies` (those that
+    have one) under OUT into paper_figures/ (`here`)."""
+    os.makedirs(os.path.join(here, "figures"), exist_ok=True)
+    for p in figures:
+        shutil.copy(p, os.path.join(here, "figures", os.path.basename(p)))
+    os.makedirs(os.path.join(here, "tables"), exist_ok=True)
+    for study in studies:
+        s = os.path.join(out, study, "summary.csv")
+        if os.path.exists(s):
+            shutil.copy(s, os.path.join(here, "tables", f"{study}_summary.csv"))
+
+
 def publish_only(out, studies, figs, here, command):
     """Publishes the named studies' figures, summaries and sections alone."""
     rep = os.path.join(here, "REPRODUCTION.md")
@@ -1129,12 +1142,7 @@ def publish_only(out, studies, figs, here, command):
             print(f"plot.py: {out}/{study}/runs.csv has no runs to publish", file=sys.stderr)
             return 2
         text = splice_section(text, heading, lines)
-        os.makedirs(os.path.join(here, "figures"), exist_ok=True)
-        for p in fig(out, figs):
-            shutil.copy(p, os.path.join(here, "figures", os.path.basename(p)))
-        os.makedirs(os.path.join(here, "tables"), exist_ok=True)
-        shutil.copy(os.path.join(out, study, "summary.csv"),
-                    os.path.join(here, "tables", f"{study}_summary.csv"))
+        copy_published(here, fig(out, figs), out, [study])
     tmp = rep + ".tmp"
     with open(tmp, "w") as f:
         f.write(text)
@@ -1182,14 +1190,7 @@ def main():
     print(f"plot.py: {len(written)} figure files in {figs}, {len(rows)} claims in {rep}")
     if a.publish:
         here = os.path.dirname(os.path.abspath(__file__))
-        for p in written:
-            shutil.copy(p, os.path.join(here, "figures", os.path.basename(p))
-                        if os.makedirs(os.path.join(here, "figures"), exist_ok=True) is None else p)
-        os.makedirs(os.path.join(here, "tables"), exist_ok=True)
-        for study in sorted(os.listdir(a.out)):
-            s = os.path.join(a.out, study, "summary.csv")
-            if os.path.exists(s):
-                shutil.copy(s, os.path.join(here, "tables", f"{study}_summary.csv"))
+        copy_published(here, written, a.out, sorted(os.listdir(a.out)))
         shutil.copy(rep, os.path.join(here, "REPRODUCTION.md"))
         print(f"plot.py: published into {here}")
     return 0
