@@ -189,6 +189,47 @@ std::pair<double, std::size_t> deepest_left(const EpeckSet& region, const Polygo
   return best;
 }
 
+//! The part of the convex counter-clockwise polygon `subject` inside the
+//! convex counter-clockwise `clip` (Sutherland–Hodgman, floating point).
+Polygon clip_convex(const Polygon& subject, const Polygon& clip) {
+  Polygon out = subject;
+  for (std::size_t i = 0; i < clip.size() && !out.empty(); ++i) {
+    const Vec2 a = clip[i], b = clip[(i + 1) % clip.size()];
+    const auto side = [&](Vec2 v) { return (b.x - a.x) * (v.y - a.y) - (b.y - a.y) * (v.x - a.x); };
+    Polygon in;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      const Vec2 p = out[k], q = out[(k + 1) % out.size()];
+      const double sp = side(p), sq = side(q);
+      if (sp >= 0.0) in.push_back(p);
+      if ((sp >= 0.0) != (sq >= 0.0)) in.push_back(p + (sp / (sp - sq)) * (q - p));
+    }
+    out = std::move(in);
+  }
+  return out;
+}
+
+//! True when a point is found strictly inside both polygons (exact side
+//! tests) and more than `tolerance` (plus 1 nm for rounding) from the
+//! boundary of one of them; the candidate, for two convex polygons, is the
+//! vertex mean of their intersection clipped in floating point. Such a point
+//! lies in the intersection and outside every allowance piece of that
+//! polygon, so overlap_depth() returns a depth. False proves nothing.
+bool deep_common_point(const Polygon& a, const Polygon& b, double tolerance) {
+  const double need = tolerance + 1e-9;
+  const auto ca = to_cgal<Epick>(a), cb = to_cgal<Epick>(b);
+  const auto deep = [&](Vec2 v) {
+    return ca.bounded_side(pt(v)) == CGAL::ON_BOUNDED_SIDE &&
+           cb.bounded_side(pt(v)) == CGAL::ON_BOUNDED_SIDE &&
+           (boundary_distance(v, a).first > need || boundary_distance(v, b).first > need);
+  };
+  if (!is_convex_ccw(a) || !is_convex_ccw(b)) return false;
+  const Polygon common = clip_convex(a, b);
+  if (common.size() < 3) return false;
+  Vec2 mean{0.0, 0.0};
+  for (const Vec2& v : common) mean = mean + (1.0 / static_cast<double>(common.size())) * v;
+  return deep(mean);
+}
+
 }  // namespace
 
 bool is_simple(const Polygon& polygon) {
@@ -264,12 +305,16 @@ std::optional<double> overlap_depth(const Polygon& a, const Polygon& b, double t
   const auto pa = to_cgal<Epeck>(a);
   const auto pb = to_cgal<Epeck>(b);
   if (CGAL::do_overlap(pa.bbox(), pb.bbox()) == false) return std::nullopt;
-  std::list<CGAL::Polygon_with_holes_2<Epeck>> common;
-  CGAL::intersection(pa, pb, std::back_inserter(common));
-  if (common.empty()) return std::nullopt;
+  // A corner of one strictly inside the other (an exact predicate) and
+  // deeper than the tolerance: the interiors meet, so the intersection
+  // below would be non-empty and the answer is this corner. Taken first, it
+  // spares the Boolean operation, the costly part, with the same answer.
   const double corner = std::max(deepest(a, b, CGAL::ON_BOUNDED_SIDE).first,
                                  deepest(b, a, CGAL::ON_BOUNDED_SIDE).first);
   if (corner > tolerance) return corner;
+  std::list<CGAL::Polygon_with_holes_2<Epeck>> common;
+  CGAL::intersection(pa, pb, std::back_inserter(common));
+  if (common.empty()) return std::nullopt;
   EpeckSet region;
   for (const auto& part : common) region.join(part);
   const auto near_b = allowance(b, tolerance, false);
@@ -280,6 +325,10 @@ std::optional<double> overlap_depth(const Polygon& a, const Polygon& b, double t
   for (const auto& piece : near_a) deep_a.difference(piece);
   return std::max({corner, deepest_left(deep_b, b).first, deepest_left(deep_a, a).first,
                    tolerance});
+}
+
+bool overlap_beyond_contact(const Polygon& a, const Polygon& b, double tolerance) {
+  return deep_common_point(a, b, tolerance) || overlap_depth(a, b, tolerance).has_value();
 }
 
 std::vector<Polygon> convex_partition(const Polygon& polygon) {

@@ -72,10 +72,12 @@ std::string metres_text(double metres);
 inline bool inside_with_contact(const Polygon& inner, const Polygon& outer) {
   return !protrusion(inner, outer).has_value();
 }
-//! interiors_overlap beyond kContactTolerance (furniture against furniture).
-inline bool overlap_beyond_contact(const Polygon& a, const Polygon& b) {
-  return overlap_depth(a, b).has_value();
-}
+//! overlap_depth(a, b, tolerance).has_value(), the same answer for every
+//! input: furniture against furniture beyond contact. For two convex
+//! footprints a common point deeper than the tolerance (checked with exact
+//! side tests) answers without the Boolean operation.
+bool overlap_beyond_contact(const Polygon& a, const Polygon& b,
+                            double tolerance = kContactTolerance);
 
 //! Convex pieces whose union is the simple counter-clockwise polygon: CGAL's
 //! optimal convex partition (fewest pieces; Greene's dynamic program, O(n⁴)

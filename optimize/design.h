@@ -94,6 +94,12 @@ struct DesignResult {
   bool stopped = false;  //!< interrupted through the stop flag
   double time_total_s = 0.0;
   double time_planning_s = 0.0;  //!< wall time spent planning tours
+  //! Wall time of the run's three phases, which sum to time_total_s up to
+  //! the report's bookkeeping: the setup (AO sequences, C-space, planners
+  //! and their decomposition), the annealing (with the unblocking before it
+  //! and the planning in it) and the finish (polish, rescue, final checks).
+  //! Planning and grid fills (gate_ms) cut across the phases.
+  double time_setup_s = 0.0, time_anneal_s = 0.0, time_finish_s = 0.0;
   double t_start = 0.0, t_end = 0.0;
   //! Found tours that recheck_tour() turned to unfound (over all plannings).
   int tours_invalidated = 0;
@@ -158,6 +164,9 @@ struct DesignResult {
 std::string layout_violation(const geometry::Scene& scene);
 //! The same for object `index` only, against the room, door zone and others.
 std::string object_violation(const geometry::Scene& scene, int index);
+//! object_violation(scene, index).empty(), the same verdict, quicker where
+//! two convex footprints overlap deeply (no amount to report).
+bool object_fits(const geometry::Scene& scene, int index);
 
 //! Runs one design. `stop` (may be null) ends the run after the current
 //! iteration; `progress` (may be null) is called after every iteration.

@@ -30,7 +30,7 @@ int EscapePolicy::separate(std::vector<Pose2>& poses, std::uint64_t seed, const 
     const int before = moved;
     for (std::size_t i = 0; i < poses.size(); ++i) {
       const int o = static_cast<int>(i);
-      if (!movable_[i] || object_violation(round_.scene(), o).empty()) continue;
+      if (!movable_[i] || object_fits(round_.scene(), o)) continue;
       std::optional<Pose2> found;
       std::vector<Pose2> p = poses;
       for (int draw = 0; draw < kSeparateDraws && !found; ++draw) {
@@ -117,7 +117,7 @@ std::optional<Pose2> EscapePolicy::displacing_pose(int o, const std::vector<Pose
   }
   return nearest_pose(poses[static_cast<std::size_t>(o)], box, 0.2, [&](const Pose2& to) {
     larger.objects[static_cast<std::size_t>(at)].pose = to;
-    return object_violation(larger, at).empty();
+    return object_fits(larger, at);
   });
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "geometry/polygon_ops.h"
@@ -107,9 +108,9 @@ bool boxes_apart(const geometry::Box& a, const geometry::Box& b) {
   return b.xmin > a.xmax || b.xmax < a.xmin || b.ymin > a.ymax || b.ymax < a.ymin;
 }
 
-}  // namespace
-
-std::string object_violation(const geometry::Scene& scene, int index) {
+//! The first violation of object `index`: its text when `describe`, else
+//! "x" (the same verdict, with the quicker predicates that give no amount).
+std::string violation(const geometry::Scene& scene, int index, bool describe) {
   // Contact is allowed within geometry::kContactTolerance, as in the reader.
   const auto& o = scene.objects[index];
   // Cheap tests that only skip an exact test whose answer they prove (a
@@ -119,21 +120,38 @@ std::string object_violation(const geometry::Scene& scene, int index) {
   const geometry::Box box = geometry::bounding_box(fp);
   if (!inside_convex_room(fp, scene.room.polygon) && !clearly_inside(fp, scene.room.polygon))
     if (const auto out = geometry::protrusion(fp, scene.room.polygon))
-      return o.id + " " + geometry::sticks_out_text(*out, scene.room.polygon);
+      return describe ? o.id + " " + geometry::sticks_out_text(*out, scene.room.polygon) : "x";
+  const auto overlap = [&](const geometry::Polygon& other) -> std::optional<double> {
+    if (describe) return geometry::overlap_depth(fp, other);
+    return geometry::overlap_beyond_contact(fp, other) ? std::optional<double>(0.0) : std::nullopt;
+  };
   const geometry::Polygon door = geometry::door_clear_zone(scene);
   if (!boxes_apart(box, geometry::bounding_box(door)) && !contact_at_most(fp, door))
-    if (const auto depth = geometry::overlap_depth(fp, door))
-      return o.id + " enters the door's clear zone by " + geometry::metres_text(*depth) + " m";
+    if (const auto depth = overlap(door))
+      return describe ? o.id + " enters the door's clear zone by " + geometry::metres_text(*depth) +
+                            " m"
+                      : "x";
   for (std::size_t j = 0; j < scene.objects.size(); ++j) {
     if (static_cast<int>(j) == index) continue;
     const auto other = geometry::world_footprint(scene.objects[j]);
     // Disjoint bounding boxes: no overlap, without the exact test.
     if (boxes_apart(box, geometry::bounding_box(other)) || contact_at_most(fp, other)) continue;
-    if (const auto depth = geometry::overlap_depth(fp, other))
-      return o.id + " overlaps " + scene.objects[j].id + " by " + geometry::metres_text(*depth) +
-             " m";
+    if (const auto depth = overlap(other))
+      return describe ? o.id + " overlaps " + scene.objects[j].id + " by " +
+                            geometry::metres_text(*depth) + " m"
+                      : "x";
   }
   return "";
+}
+
+}  // namespace
+
+std::string object_violation(const geometry::Scene& scene, int index) {
+  return violation(scene, index, true);
+}
+
+bool object_fits(const geometry::Scene& scene, int index) {
+  return violation(scene, index, false).empty();
 }
 
 std::string layout_violation(const geometry::Scene& scene) {

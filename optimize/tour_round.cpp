@@ -208,7 +208,7 @@ bool TourRound::fits(const std::vector<Pose2>& p, int moved) {
       saved.emplace_back(i, work_.objects[i].pose);
       work_.objects[i].pose = p[i];
     }
-  const bool ok = object_violation(work_, moved).empty();
+  const bool ok = object_fits(work_, moved);
   for (const auto& [i, pose] : saved) work_.objects[i].pose = pose;
   return ok;
 }

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,64 @@ std::string reader_error(const Scene& scene) {
     return e.what();
   }
   return "";
+}
+
+// overlap_beyond_contact() takes a shortcut for convex pairs (a common point
+// deeper than the tolerance); it must answer as overlap_depth() does. 6000
+// seeded pairs: rectangles at random (most apart or deeply overlapping),
+// flush against each other within ±30 µm along a shared edge (contact and
+// shallow overlaps, the tolerance's edge), crossing like a plus sign, and
+// an L-shaped (non-convex) footprint against a rectangle.
+Polygon rectangle(Vec2 c, double hw, double hh, double theta) {
+  const double co = std::cos(theta), si = std::sin(theta);
+  Polygon out;
+  for (const Vec2 v : {Vec2{-hw, -hh}, Vec2{hw, -hh}, Vec2{hw, hh}, Vec2{-hw, hh}})
+    out.push_back({c.x + co * v.x - si * v.y, c.y + si * v.x + co * v.y});
+  return out;
+}
+
+TEST(ContactPredicates, QuickOverlapAnswersAsTheExactOne) {
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double offsets[] = {-3e-5, -1.2e-5, -8e-6, -2e-6, 0.0, 3e-6, 2e-5};
+  int overlapping = 0, apart = 0;
+  for (int c = 0; c < 6000; ++c) {
+    const double theta = 2.0 * kPi * unit(rng);
+    const Vec2 ca{4.0 * unit(rng), 4.0 * unit(rng)};
+    const double hw = 0.1 + 1.2 * unit(rng), hh = 0.1 + 1.2 * unit(rng);
+    const Polygon a = rectangle(ca, hw, hh, theta);
+    Polygon b;
+    const Vec2 ax{std::cos(theta), std::sin(theta)}, ay{-ax.y, ax.x};
+    switch (c % 4) {
+      case 0:  // anywhere near, any heading
+        b = rectangle({ca.x + 3.0 * unit(rng) - 1.5, ca.y + 3.0 * unit(rng) - 1.5},
+                      0.1 + 1.2 * unit(rng), 0.1 + 1.2 * unit(rng), 2.0 * kPi * unit(rng));
+        break;
+      case 1: {  // flush against a's right side, shifted along it
+        const double bw = 0.1 + unit(rng), bh = 0.1 + unit(rng);
+        const double gap = offsets[rng() % 7];
+        const Vec2 cb = ca + (hw + bw + gap) * ax + (2.0 * unit(rng) - 1.0) * (hh + bh) * ay;
+        b = rectangle(cb, bw, bh, theta + (rng() % 2 ? kPi : 0.0));
+        break;
+      }
+      case 2:  // a plus sign: long and thin across a's middle
+        b = rectangle(ca + (0.2 * unit(rng) - 0.1) * ax, 0.02 + 0.05 * unit(rng),
+                      hh + 0.5 * unit(rng), theta + 0.3 * unit(rng) - 0.15);
+        break;
+      default: {  // an L (not convex) near a
+        const Vec2 o = ca + (2.0 * unit(rng) - 1.0) * ax + (2.0 * unit(rng) - 1.0) * ay;
+        b = {o, o + 1.0 * ax, o + 1.0 * ax + 0.4 * ay, o + 0.4 * ax + 0.4 * ay,
+             o + 0.4 * ax + 1.0 * ay, o + 1.0 * ay};
+        break;
+      }
+    }
+    const bool exact = overlap_depth(a, b).has_value();
+    ASSERT_EQ(overlap_beyond_contact(a, b), exact) << "case " << c;
+    ASSERT_EQ(overlap_beyond_contact(b, a), overlap_depth(b, a).has_value()) << "case " << c;
+    (exact ? overlapping : apart) += 1;
+  }
+  EXPECT_GT(overlapping, 1500);
+  EXPECT_GT(apart, 1500);
 }
 
 TEST(ContactScenes, FlushAgainstEveryWallValidates) {

@@ -206,8 +206,8 @@ bool exactly_valid(const geometry::Scene& scene, int index) {
 }
 
 TEST(LayoutChecks, ShortcutsNeverChangeAnAnswer) {
-  // object_violation() skips an exact predicate when a floating-point test
-  // proves its answer (inside a convex room, polygons apart or in contact
+  // object_violation() and object_fits() skip an exact predicate when a
+  // floating-point test proves its answer (inside a convex room, polygons apart or in contact
   // along an axis). Against the exact predicates alone, on random poses of
   // the shipped rooms' objects (a convex room and an L-shaped one), many
   // of them flush against a wall or against another object, or just past.
@@ -242,6 +242,8 @@ TEST(LayoutChecks, ShortcutsNeverChangeAnAnswer) {
       }
       const bool fast = object_violation(work, i).empty();
       ASSERT_EQ(fast, exactly_valid(work, i)) << file << " case " << c << " object " << o.id;
+      // object_fits() adds a shortcut for deep overlaps of convex footprints.
+      ASSERT_EQ(object_fits(work, i), fast) << file << " case " << c << " object " << o.id;
       ++checked;
       invalid += fast ? 0 : 1;
     }
