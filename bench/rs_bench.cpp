@@ -12,6 +12,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -114,6 +116,69 @@ void BM_OmplDistance(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "far" : "near");
 }
 BENCHMARK(BM_OmplDistance)->Arg(0)->Arg(1);
+
+//! The RRT's pick among its k = 10 nearest nodes (rs::first_shortest):
+//! 512 sets, each the 10 nodes of a 2000-pose cloud (5 m box) nearest to a
+//! random target by the planner's weighted distance (heading 0.7 m/rad).
+//! Arg 0 is first_shortest, whose later solves are capped just above the
+//! best length so far; arg 1 is the previous method on the same sets: the
+//! same order by lower bound, each pose solved in full.
+struct PickSet {
+  std::vector<Pose2> from;
+  Pose2 to;
+};
+const std::vector<PickSet>& pick_sets() {
+  static const std::vector<PickSet> sets = [] {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> pos(-5.0, 5.0), ang(-std::numbers::pi, std::numbers::pi);
+    std::vector<Pose2> cloud(2000);
+    for (auto& p : cloud) p = {pos(rng), pos(rng), ang(rng)};
+    std::vector<PickSet> out(512);
+    std::vector<std::pair<double, std::size_t>> order;
+    for (auto& s : out) {
+      s.to = {pos(rng), pos(rng), ang(rng)};
+      order.clear();
+      for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const double dx = cloud[i].x - s.to.x, dy = cloud[i].y - s.to.y;
+        const double dt = hrs::geometry::wrap_angle(cloud[i].theta - s.to.theta);
+        order.emplace_back(dx * dx + dy * dy + 0.49 * dt * dt, i);
+      }
+      std::partial_sort(order.begin(), order.begin() + 10, order.end());
+      for (int k = 0; k < 10; ++k) s.from.push_back(cloud[order[k].second]);
+    }
+    return out;
+  }();
+  return sets;
+}
+std::size_t pick_uncapped(const PickSet& s, std::vector<std::pair<double, std::size_t>>& scratch) {
+  scratch.clear();
+  for (std::size_t i = 0; i < s.from.size(); ++i)
+    scratch.emplace_back(hrs::rs::length_lower_bound(s.from[i], s.to, kRadius), i);
+  std::sort(scratch.begin(), scratch.end());
+  std::size_t best = s.from.size();
+  double best_length = std::numeric_limits<double>::infinity();
+  for (const auto& [bound, i] : scratch) {
+    if (bound > best_length + 1e-9 * (1.0 + best_length)) break;
+    const double d = hrs::rs::shortest_length(s.from[i], s.to, kRadius);
+    if (d < best_length || (best < s.from.size() && d == best_length && i < best))
+      best_length = d, best = i;
+  }
+  return best;
+}
+void BM_RsFirstShortest(benchmark::State& state) {
+  const auto& sets = pick_sets();
+  std::vector<std::pair<double, std::size_t>> scratch;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const PickSet& s = sets[i++ & 511];
+    if (state.range(0) == 0)
+      benchmark::DoNotOptimize(hrs::rs::first_shortest(s.from, s.to, kRadius, scratch));
+    else
+      benchmark::DoNotOptimize(pick_uncapped(s, scratch));
+  }
+  state.SetLabel(state.range(0) == 0 ? "k=10, capped" : "k=10, previous (uncapped)");
+}
+BENCHMARK(BM_RsFirstShortest)->Arg(0)->Arg(1);
 
 const hrs::rs::Decomposition& decomposition() {
   static const hrs::rs::Decomposition d = [] {

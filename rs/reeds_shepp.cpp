@@ -625,9 +625,13 @@ inline void solve_pair(PairQuery& q, Best& best) {
 
 //! The shortest candidate, with the pruning of `kMode` (a Pruning value):
 //! 0 evaluates every candidate, 1 skips families by their bounds, 2 also
-//! pre-checks each candidate.
+//! pre-checks each candidate. With a finite `cap` (unit radius) only
+//! candidates shorter than it are offered: every pruning test compares a
+//! bound with the best length so far, so a query whose shortest candidate is
+//! below the cap gets the same answer bit for bit, and any other query gets
+//! len == cap with no candidate (code -1).
 template <int kMode = 2>
-Best solve(const Local& q) {
+Best solve(const Local& q, double cap = kInf) {
   const double s = std::sin(q.phi), c = std::cos(q.phi);
   // 1 -/+ cos φ without cancellation: s² / (1 ± c) where 1 ± c is large.
   const double omc = c > 0.0 ? s * s / (1.0 + c) : 1.0 - c;
@@ -641,7 +645,10 @@ Best solve(const Local& q) {
                         {xb, yb, q.phi, s, c, omc, opc, kBackwards, hb},
                         {xb, -yb, -q.phi, -s, c, omc, opc, kBackwards | kReflect, hb}};
   Best best;
+  best.len = cap;
+  best.code = -1;
   for (PairQuery& p : pairs) solve_pair<kMode>(p, best);
+  if (best.code < 0) best.code = 0, best.len = kInf;
   return best;
 }
 
@@ -812,11 +819,18 @@ std::size_t first_shortest(std::span<const Pose2> from, const Pose2& to, double 
   for (std::size_t i = 0; i < from.size(); ++i)
     scratch.emplace_back(length_lower_bound(from[i], to, radius), i);
   std::sort(scratch.begin(), scratch.end());
+  // Once a length is known, later poses are solved with a cap just above
+  // it (solve()): a pose that can win or tie gets its exact length, and the
+  // others stop at the first bounds that exceed the cap. The cap's margin
+  // covers the snapping of final_length() (at most 5 kTol).
   std::size_t best = from.size();
   double best_length = std::numeric_limits<double>::infinity();
+  const double inv = 1.0 / radius;
   for (const auto& [bound, i] : scratch) {
     if (bound > best_length + kRounding * (1.0 + best_length)) break;
-    const double d = shortest_length(from[i], to, radius);
+    const double cap = best_length * inv + kRounding * (1.0 + best_length * inv);
+    const Best b = solve(to_local(from[i], to, radius), cap);
+    const double d = b.len < kInf ? final_length(b) * radius : kInf;
     if (d < best_length || (best < from.size() && d == best_length && i < best)) {
       best_length = d;
       best = i;

@@ -185,6 +185,45 @@ TEST(RsShortest, FirstShortestIsTheFirstOfTheShortestLengths) {
   EXPECT_EQ(first_shortest({}, Pose2{0, 0, 0}, 1.0, scratch), 0u);
 }
 
+// The cap first_shortest gives its later solves: sets whose poses are copies
+// of one pose moved by 1e-15..1e-8 m or rad, so that lengths tie or differ by
+// less than the cap's margin; 20000 sets, against the plain loop.
+TEST(RsShortest, FirstShortestAgreesOnNearTies) {
+  std::mt19937_64 rng(44);
+  std::uniform_int_distribution<int> exponent(-15, -8);
+  std::vector<std::pair<double, std::size_t>> scratch;
+  int close = 0;
+  for (int c = 0; c < 20000; ++c) {
+    const double r = 0.3 + (c % 5) * 0.3;
+    const Pose2 to = random_pose(rng, 2.0);
+    const Pose2 base = random_pose(rng, 3.0);
+    std::vector<Pose2> from;
+    const int n = 2 + c % 10;
+    for (int i = 0; i < n; ++i) {
+      Pose2 p = base;
+      const double e = std::pow(10.0, exponent(rng));
+      switch (rng() % 4) {
+        case 0: break;
+        case 1: p.x += e; break;
+        case 2: p.y -= e; break;
+        default: p.theta = geometry::wrap_angle(p.theta + e); break;
+      }
+      from.push_back(i % 3 == 2 ? random_pose(rng, 3.0) : p);
+    }
+    std::size_t expected = from.size();
+    double best = std::numeric_limits<double>::infinity();
+    std::vector<double> d(from.size());
+    for (std::size_t i = 0; i < from.size(); ++i) {
+      d[i] = shortest_length(from[i], to, r);
+      if (d[i] < best) best = d[i], expected = i;
+    }
+    for (std::size_t i = 0; i < from.size(); ++i)
+      if (i != expected && d[i] > best && d[i] <= best * (1.0 + 1e-9)) ++close;
+    ASSERT_EQ(first_shortest(from, to, r, scratch), expected) << "set " << c;
+  }
+  EXPECT_GT(close, 1000);  // lengths within the cap's margin of the best occur
+}
+
 TEST(RsShortest, InvariantUnderRigidMotions) {
   std::mt19937_64 rng(18);
   std::uniform_real_distribution<double> ang(-kPi, kPi), off(-50.0, 50.0);
