@@ -153,7 +153,8 @@ Table generalization_summary(const Table& runs) {
                              "success_tourable", "tours_found", "tours_total",
                              "cost_final", "cost_witness", "cost_vs_witness", "cost_le_witness",
                              "prefs_met", "prefs_total", "prefs_share", "worst_angle_deg",
-                             "angle_over_20", "witness_prefs_met", "total_s", "planning_s"});
+                             "angle_over_20", "witness_prefs_met", "total_s", "planning_s",
+                             "design_setup_s", "anneal_s", "finish_s", "grid_s"});
   // The slowest run of each group.
   for (Row& row : s) {
     double worst = 0.0;

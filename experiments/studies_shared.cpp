@@ -42,6 +42,10 @@ Row design_measures(const optimize::DesignResult& r) {
   m.set("total_s", r.time_total_s);
   m.set("planning_s", r.time_planning_s);
   m.set("planning_share", r.time_total_s > 0 ? r.time_planning_s / r.time_total_s : 0.0);
+  m.set("design_setup_s", r.time_setup_s);
+  m.set("anneal_s", r.time_anneal_s);
+  m.set("finish_s", r.time_finish_s);
+  m.set("grid_s", r.gate_ms / 1e3);
   m.set("cost_initial", r.initial.total());
   m.set("cost_final", r.final.total());
   m.set("tours_found", r.final.tours_found);

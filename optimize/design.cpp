@@ -69,6 +69,8 @@ class DesignRun {
   DesignResult run() {
     // A stop before the first plan: there is no design yet (design.h).
     throw_if_stopped(stop_, "design setup");
+    result_.time_setup_s = seconds_since(t0_);
+    const auto anneal0 = Clock::now();
     plan_current();
     current_terms_ = model_.evaluate(poses_, round_.tours(), &round_.blockage());
     result_.initial = current_terms_;
@@ -92,7 +94,10 @@ class DesignRun {
     const AnnealOptions schedule = make_schedule();
     std::mt19937_64 rng(options_.seed);
     const AnnealResult r = anneal(poses_, movable_, schedule, callbacks(), rng, stop_);
+    const auto finish0 = Clock::now();
+    result_.time_anneal_s = std::chrono::duration<double>(finish0 - anneal0).count();
     finish(r);
+    result_.time_finish_s = seconds_since(finish0);
     result_.time_total_s = seconds_since(t0_);
     return std::move(result_);
   }

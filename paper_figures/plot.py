@@ -500,6 +500,28 @@ def zoo_section(root, command=None):
                 f"[{100 * lo:.0f}, {100 * hi:.0f}] % | {tour_cell} | {met}/{total} = {100 * met / max(total, 1):.0f} % "
                 f"[{100 * plo:.0f}, {100 * phi:.0f}] | {bad}/{n} | {le}/{n} [{100 * llo:.0f}, "
                 f"{100 * lhi:.0f}] % | {sum(t) / n:.1f} / {max(t):.1f} |")
+    if "anneal_s" in runs[0]:
+        lines += [
+            "",
+            "Where the time goes (mean seconds per design): the three phases add up to the "
+            "total; planning and the reachability-grid fills run within them.",
+            "",
+            "| bucket | planner | total | setup | annealing | finish (polish, rescue) "
+            "| planning | grid fills |",
+            "|---|---|---|---|---|---|---|---|",
+        ]
+        for b in buckets:
+            for planner in ["baseline", "all"]:
+                rb = by(runs, bucket=b, planner=planner)
+                if not rb:
+                    continue
+                mean = {k: sum(num(r, k) for r in rb) / len(rb) for k in
+                        ("total_s", "design_setup_s", "anneal_s", "finish_s", "planning_s",
+                         "grid_s")}
+                lines.append(
+                    f"| {b} | {SHORT.get(planner, planner)} | {mean['total_s']:.1f} | "
+                    f"{mean['design_setup_s']:.1f} | {mean['anneal_s']:.1f} | "
+                    f"{mean['finish_s']:.1f} | {mean['planning_s']:.1f} | {mean['grid_s']:.1f} |")
     return lines
 
 

@@ -161,6 +161,16 @@ TEST(Design, OutputsAreValidIndependentlyOfTheAnnealer) {
   EXPECT_EQ(report["trace"].size(), 25u);
   EXPECT_NEAR(report["cost"]["final"].get<double>(), result.final.total(), 1e-12);
   EXPECT_LE(report["time_s"]["planning"].get<double>(), report["time_s"]["total"].get<double>());
+  // The three phases add up to the total (the clock is read between them);
+  // the grid fills run within them.
+  const json& t = report["time_s"];
+  const double total = t["total"].get<double>();
+  for (const char* phase : {"setup", "annealing", "finish", "grid"}) EXPECT_GE(t[phase].get<double>(), 0.0);
+  EXPECT_GT(t["setup"].get<double>(), 0.0);
+  EXPECT_GT(t["annealing"].get<double>(), 0.0);
+  EXPECT_NEAR(t["setup"].get<double>() + t["annealing"].get<double>() + t["finish"].get<double>(),
+              total, 1e-3 * total + 1e-4);
+  EXPECT_LE(t["grid"].get<double>(), total);
   const std::string svg = read(dir / "design.svg");
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   for (const auto& o : scene.objects) EXPECT_NE(svg.find(">" + o.id + "<"), std::string::npos);
