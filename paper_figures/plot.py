@@ -447,6 +447,15 @@ ZOO_HEADING = "## Beyond the paper: rooms nobody tuned for (the room zoo)"
 TRADEOFF_HEADING = "## Beyond the paper: preferences against tours (the trade-off study)"
 
 
+def zoo_groups(runs, buckets):
+    """(bucket, planner, runs) of the zoo study, in table order, non-empty only."""
+    for b in buckets:
+        for planner in ["baseline", "all"]:
+            rb = by(runs, bucket=b, planner=planner)
+            if rb:
+                yield b, planner, rb
+
+
 def zoo_section(root, command=None):
     """REPRODUCTION.md lines on the room zoo (beyond the paper): per bucket and
     planner, tours, preferences, the search gap to the planted witness, time."""
@@ -474,32 +483,28 @@ def zoo_section(root, command=None):
         "time mean / max (s) |",
         "|---|---|---|---|---|---|---|---|---|",
     ]
-    for b in buckets:
-        for planner in ["baseline", "all"]:
-            rb = by(runs, bucket=b, planner=planner)
-            if not rb:
-                continue
-            n = len(rb)
-            ok = sum(int(num(r, "success")) for r in rb)
-            lo, hi = stats.wilson(ok, n)
-            # Rooms whose planted witness the design's planner tours (>= 9/10):
-            # a design there can succeed; older tables lack the column.
-            toured = [r for r in rb if r.get("witness_tourable", "") == "1"]
-            ok_t = sum(int(num(r, "success")) for r in toured)
-            tour_cell = (f"{ok_t}/{len(toured)}" if any(r.get("witness_tourable", "") != ""
-                                                         for r in rb) else "–")
-            met = sum(int(num(r, "prefs_met")) for r in rb)
-            total = sum(int(num(r, "prefs_total")) for r in rb)
-            plo, phi = stats.wilson(met, total)
-            bad = sum(int(num(r, "angle_over_20")) for r in rb)
-            le = sum(int(num(r, "cost_le_witness")) for r in rb)
-            llo, lhi = stats.wilson(le, n)
-            t = [num(r, "total_s") for r in rb]
-            lines.append(
-                f"| {b} | {SHORT.get(planner, planner)} | {n} | {ok}/{n} "
-                f"[{100 * lo:.0f}, {100 * hi:.0f}] % | {tour_cell} | {met}/{total} = {100 * met / max(total, 1):.0f} % "
-                f"[{100 * plo:.0f}, {100 * phi:.0f}] | {bad}/{n} | {le}/{n} [{100 * llo:.0f}, "
-                f"{100 * lhi:.0f}] % | {sum(t) / n:.1f} / {max(t):.1f} |")
+    for b, planner, rb in zoo_groups(runs, buckets):
+        n = len(rb)
+        ok = sum(int(num(r, "success")) for r in rb)
+        lo, hi = stats.wilson(ok, n)
+        # Rooms whose planted witness the design's planner tours (>= 9/10):
+        # a design there can succeed; older tables lack the column.
+        toured = [r for r in rb if r.get("witness_tourable", "") == "1"]
+        ok_t = sum(int(num(r, "success")) for r in toured)
+        tour_cell = (f"{ok_t}/{len(toured)}" if any(r.get("witness_tourable", "") != ""
+                                                     for r in rb) else "–")
+        met = sum(int(num(r, "prefs_met")) for r in rb)
+        total = sum(int(num(r, "prefs_total")) for r in rb)
+        plo, phi = stats.wilson(met, total)
+        bad = sum(int(num(r, "angle_over_20")) for r in rb)
+        le = sum(int(num(r, "cost_le_witness")) for r in rb)
+        llo, lhi = stats.wilson(le, n)
+        t = [num(r, "total_s") for r in rb]
+        lines.append(
+            f"| {b} | {SHORT.get(planner, planner)} | {n} | {ok}/{n} "
+            f"[{100 * lo:.0f}, {100 * hi:.0f}] % | {tour_cell} | {met}/{total} = {100 * met / max(total, 1):.0f} % "
+            f"[{100 * plo:.0f}, {100 * phi:.0f}] | {bad}/{n} | {le}/{n} [{100 * llo:.0f}, "
+            f"{100 * lhi:.0f}] % | {sum(t) / n:.1f} / {max(t):.1f} |")
     if "anneal_s" in runs[0]:
         lines += [
             "",
@@ -510,18 +515,14 @@ def zoo_section(root, command=None):
             "| planning | grid fills |",
             "|---|---|---|---|---|---|---|---|",
         ]
-        for b in buckets:
-            for planner in ["baseline", "all"]:
-                rb = by(runs, bucket=b, planner=planner)
-                if not rb:
-                    continue
-                mean = {k: sum(num(r, k) for r in rb) / len(rb) for k in
-                        ("total_s", "design_setup_s", "anneal_s", "finish_s", "planning_s",
-                         "grid_s")}
-                lines.append(
-                    f"| {b} | {SHORT.get(planner, planner)} | {mean['total_s']:.1f} | "
-                    f"{mean['design_setup_s']:.1f} | {mean['anneal_s']:.1f} | "
-                    f"{mean['finish_s']:.1f} | {mean['planning_s']:.1f} | {mean['grid_s']:.1f} |")
+        for b, planner, rb in zoo_groups(runs, buckets):
+            mean = {k: sum(num(r, k) for r in rb) / len(rb) for k in
+                    ("total_s", "design_setup_s", "anneal_s", "finish_s", "planning_s",
+                     "grid_s")}
+            lines.append(
+                f"| {b} | {SHORT.get(planner, planner)} | {mean['total_s']:.1f} | "
+                f"{mean['design_setup_s']:.1f} | {mean['anneal_s']:.1f} | "
+                f"{mean['finish_s']:.1f} | {mean['planning_s']:.1f} | {mean['grid_s']:.1f} |")
     return lines
 
 
