@@ -96,8 +96,9 @@ struct DesignResult {
   double time_planning_s = 0.0;  //!< wall time spent planning tours
   //! Wall time of the run's three phases, which sum to time_total_s up to
   //! the report's bookkeeping: the setup (AO sequences, C-space, planners
-  //! and their decomposition), the annealing (with the unblocking before it
-  //! and the planning in it) and the finish (polish, rescue, final checks).
+  //! and their decomposition), the annealing (the first planning of the
+  //! input layout, the separation and unblocking before the annealing, and
+  //! the planning in it) and the finish (polish, rescue, final checks).
   //! Planning and grid fills (gate_ms) cut across the phases.
   double time_setup_s = 0.0, time_anneal_s = 0.0, time_finish_s = 0.0;
   double t_start = 0.0, t_end = 0.0;

@@ -92,7 +92,7 @@ class TourRound {
   void move(int o, const Pose2& to);
   //! Moves every object whose C-space pose differs from `poses` (scene order).
   void place(const std::vector<Pose2>& poses);
-  //! The exact checks of object `moved` (object_violation) with every
+  //! The exact checks of object `moved` (object_fits) with every
   //! object at `p`; the working layout is unchanged afterwards.
   bool fits(const std::vector<Pose2>& p, int moved);
   //! Runs `f` with object `moved` at `to` in the C-space, then moves it

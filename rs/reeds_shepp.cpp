@@ -19,245 +19,21 @@
 //  * Sign constraints accept rounding noise (|value| <= kTol is snapped to
 //    zero, an angle of -π counts as +π), where OMPL rejects values below
 //    -10 ε; this finds the true minimum at family boundaries.
-// word_length()/word_path() evaluate single words by a separate, direct
-// transcription of the formulas (used by the tests as an independent check).
-// Driving, sampling and joining paths: rs/path.cpp.
+// The word table: rs/words.cpp. word_length()/word_path() evaluate single
+// words by a separate, direct transcription of the formulas
+// (rs/word_eval.cpp), which the tests use as an independent check. Driving,
+// sampling and joining paths: rs/path.cpp.
 
 #include "rs/reeds_shepp.h"
 
-#include <algorithm>
-#include <array>
-#include <cassert>
-#include <cmath>
-#include <limits>
-#include <numbers>
+#include "rs/candidates.h"
 
 namespace hrs::rs {
 namespace {
 
-// |(a, b)| without std::hypot's overflow scaling: the solver works in units
-// of the turning radius, far from overflow, and hypot was its hottest call.
-inline double norm2(double a, double b) { return std::sqrt(a * a + b * b); }
-
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
-constexpr double kHalfPi = 0.5 * std::numbers::pi;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-//! Rounding tolerance on path parameters, in units of the turning radius.
-constexpr double kTol = 1e-11;
-
-//! Wraps to [-π, π]; inputs here are sums of a few angles (|a| < 8π).
-inline double mod2pi(double a) {
-  while (a > kPi) a -= kTwoPi;
-  while (a < -kPi) a += kTwoPi;
-  return a;
-}
-
-//! Makes an arc angle that must be >= 0 valid: snaps rounding noise to 0 and
-//! reads -π as +π. False when the angle is genuinely negative.
-inline bool nonneg(double& a) {
-  if (a >= 0.0) return true;
-  if (a >= -kTol) {
-    a = 0.0;
-    return true;
-  }
-  if (a <= -kPi + kTol) {
-    a += kTwoPi;
-    return true;
-  }
-  return false;
-}
-//! Non-angular parameter (straight length) that must be <= 0.
-inline bool nonpos_len(double& a) {
-  if (a <= 0.0) return true;
-  if (a <= kTol) {
-    a = 0.0;
-    return true;
-  }
-  return false;
-}
-//! Mirror of nonneg() for arc angles that must be <= 0 (reads +π as −π).
-inline bool nonpos(double& a) {
-  if (nonpos_len(a)) return true;
-  if (a >= kPi - kTol) {
-    a -= kTwoPi;
-    return true;
-  }
-  return false;
-}
-
-// ---- Candidates and words ---------------------------------------------------
-
-//! The base formulas of Reeds & Shepp §8 (each for the "L+" first arc).
-enum Formula : int {
-  kLSL = 0,    //!< 8.1  L+S+L+
-  kLSR = 1,    //!< 8.2  L+S+R+
-  kLRL = 2,    //!< 8.3  L+R-L± (C|C|C, C|CC)
-  kLRLRa = 3,  //!< 8.7  L+R+L-R- (CCu|CuC)
-  kLRLRb = 4,  //!< 8.8  L+R-L-R+ (C|CuCu|C)
-  kLRSL = 5,   //!< 8.9  L+R-(π/2)S-L-
-  kLRSR = 6,   //!< 8.10 L+R-(π/2)S-R-
-  kLRSLR = 7,  //!< 8.11 L+R-(π/2)S-L-(π/2)R+
-};
-constexpr int kTimeflip = 8;
-constexpr int kReflect = 16;
-constexpr int kBackwards = 32;
-constexpr int kCodeCount = 64;
-
-//! Segment values (signed, unit radius) and steering of one candidate.
-struct Raw {
-  std::array<double, 5> value{};
-  std::array<Steer, 5> steer{};
-  int n = 0;
-};
-
-//! Builds the segments of candidate `code` with parameters (t, u, v).
-Raw raw_segments(int code, double t, double u, double v) {
-  constexpr Steer L = Steer::kLeft, R = Steer::kRight, S = Steer::kStraight;
-  Raw r;
-  auto put = [&r](Steer s, double x) {
-    r.steer[r.n] = s;
-    r.value[r.n] = x;
-    ++r.n;
-  };
-  switch (code & 7) {
-    case kLSL:
-      put(L, t), put(S, u), put(L, v);
-      break;
-    case kLSR:
-      put(L, t), put(S, u), put(R, v);
-      break;
-    case kLRL:
-      put(L, t), put(R, u), put(L, v);
-      break;
-    case kLRLRa:
-      put(L, t), put(R, u), put(L, -u), put(R, v);
-      break;
-    case kLRLRb:
-      put(L, t), put(R, u), put(L, u), put(R, v);
-      break;
-    case kLRSL:
-      put(L, t), put(R, -kHalfPi), put(S, u), put(L, v);
-      break;
-    case kLRSR:
-      put(L, t), put(R, -kHalfPi), put(S, u), put(R, v);
-      break;
-    default:
-      put(L, t), put(R, -kHalfPi), put(S, u), put(L, -kHalfPi), put(R, v);
-      break;
-  }
-  if (code & kTimeflip)
-    for (int i = 0; i < r.n; ++i) r.value[i] = -r.value[i];
-  if (code & kReflect)
-    for (int i = 0; i < r.n; ++i)
-      if (r.steer[i] != S) r.steer[i] = r.steer[i] == L ? R : L;
-  if (code & kBackwards) {
-    std::reverse(r.value.begin(), r.value.begin() + r.n);
-    std::reverse(r.steer.begin(), r.steer.begin() + r.n);
-  }
-  return r;
-}
-
-//! Nominal gear of each base parameter slot (the sign the formula enforces);
-//! for 8.3 the last arc's gear is the sign of v.
-std::string nominal_name(int code, bool v_negative) {
-  // Use unit-magnitude stand-ins with the enforced signs.
-  const int f = code & 7;
-  double t = 1.0, u = -1.0, v = 1.0;
-  if (f == kLSL || f == kLSR) u = 1.0;
-  if (f == kLRL) v = v_negative ? -1.0 : 1.0;
-  if (f == kLRLRa) u = 1.0, v = -1.0;
-  if (f == kLRSL || f == kLRSR) v = -1.0;
-  const Raw r = raw_segments(code, t, u, v);
-  std::string name;
-  for (int i = 0; i < r.n; ++i) {
-    name += static_cast<char>(r.steer[i]);
-    name += r.value[i] < 0.0 ? '-' : '+';
-  }
-  return name;
-}
-
-bool code_exists(int code) {
-  const int f = code & 7;
-  return !(code & kBackwards) || f == kLRL || f == kLRSL || f == kLRSR;
-}
-
-struct WordTable {
-  std::array<std::string, kWordCount> names;
-  //! word id of [code][v < 0]; -1 for codes that do not exist.
-  std::array<std::array<int, 2>, kCodeCount> id{};
-  //! candidate codes (and required sign of v, 0 = any) producing each word.
-  std::array<std::vector<std::pair<int, int>>, kWordCount> sources;
-
-  WordTable() {
-    int count = 0;
-    for (int code = 0; code < kCodeCount; ++code) {
-      for (int neg = 0; neg < 2; ++neg) {
-        id[code][neg] = -1;
-        if (!code_exists(code)) continue;
-        const std::string name = nominal_name(code, neg == 1);
-        int found = -1;
-        for (int w = 0; w < count; ++w)
-          if (names[w] == name) found = w;
-        if (found < 0) {
-          assert(count < kWordCount);
-          found = count;
-          names[count++] = name;
-        }
-        id[code][neg] = found;
-        const int vsign = (code & 7) == kLRL ? (neg ? -1 : 1) : 0;
-        if ((code & 7) == kLRL || neg == 0) sources[found].push_back({code, vsign});
-      }
-    }
-    assert(count == kWordCount);
-  }
-};
-
-const WordTable& table() {
-  static const WordTable t;
-  return t;
-}
-
-//! Word of candidate `code` with base parameter v (only 8.3 depends on it;
-//! v is the formula's value, before the time-flip negates the segments).
-int word_of(int code, double v) { return table().id[code][v < 0.0 ? 1 : 0]; }
-
-// ---- Normalisation ----------------------------------------------------------
-
-//! The goal seen from the start, scaled to unit radius.
-struct Local {
-  double x = 0.0, y = 0.0, phi = 0.0;
-};
-
-Local to_local(const Pose2& from, const Pose2& to, double radius) {
-  assert(radius > 0.0);
-  const double c = std::cos(from.theta), s = std::sin(from.theta);
-  const double dx = to.x - from.x, dy = to.y - from.y;
-  const double inv = 1.0 / radius;
-  return {(c * dx + s * dy) * inv, (-s * dx + c * dy) * inv,
-          geometry::wrap_angle(to.theta - from.theta)};
-}
-
-//! Snaps rounding noise to zero and sums the magnitudes.
-double snapped_length(Raw& r) {
-  double len = 0.0;
-  for (int i = 0; i < r.n; ++i) {
-    if (std::abs(r.value[i]) <= kTol) r.value[i] = 0.0;
-    len += std::abs(r.value[i]);
-  }
-  return len;
-}
+using namespace detail;
 
 // ---- The fast solver --------------------------------------------------------
-
-struct Best {
-  double len = kInf;
-  int code = 0;
-  double t = 0.0, u = 0.0, v = 0.0;
-  void offer(double l, int c, double tt, double uu, double vv) {
-    if (l < len) len = l, code = c, t = tt, u = uu, v = vv;
-  }
-};
 
 //! A direction in the plane standing for the angle atan2(y, x): a path
 //! parameter of a candidate known before any atan2 is evaluated. Products add
@@ -629,7 +405,7 @@ inline void solve_pair(PairQuery& q, Best& best) {
 //! candidates shorter than it are offered: every pruning test compares a
 //! bound with the best length so far, so a query whose shortest candidate is
 //! below the cap gets the same answer bit for bit, and any other query gets
-//! len == cap with no candidate (code -1).
+//! code 0 and an infinite length.
 template <int kMode = 2>
 Best solve(const Local& q, double cap = kInf) {
   const double s = std::sin(q.phi), c = std::cos(q.phi);
@@ -650,145 +426,6 @@ Best solve(const Local& q, double cap = kInf) {
   for (PairQuery& p : pairs) solve_pair<kMode>(p, best);
   if (best.code < 0) best.code = 0, best.len = kInf;
   return best;
-}
-
-// ---- The plain single-candidate evaluator -----------------------------------
-
-//! Parameters (t, u, v) of candidate `code` for the normalised query; false
-//! when the candidate's sign constraints fail. Direct transcription of
-//! Reeds & Shepp eqs. 8.1–8.11 (no shared terms), as an independent check.
-bool eval_candidate(int code, const Local& q, double& t, double& u, double& v) {
-  double x = q.x, y = q.y, phi = q.phi;
-  if (code & kBackwards) {
-    const double xb = x * std::cos(phi) + y * std::sin(phi);
-    const double yb = x * std::sin(phi) - y * std::cos(phi);
-    x = xb, y = yb;
-  }
-  if (code & kTimeflip) x = -x, phi = -phi;
-  if (code & kReflect) y = -y, phi = -phi;
-  const double sp = std::sin(phi), cp = std::cos(phi);
-  switch (code & 7) {
-    case kLSL: {
-      const double xi = x - sp, eta = y - 1.0 + cp;
-      u = norm2(xi, eta);
-      t = std::atan2(eta, xi);
-      if (!nonneg(t)) return false;
-      v = mod2pi(phi - t);
-      return nonneg(v);
-    }
-    case kLSR: {
-      const double xi = x + sp, eta = y - 1.0 + -cp;
-      const double r2 = xi * xi + eta * eta;
-      if (r2 < 4.0 - kTol) return false;
-      u = std::sqrt(std::max(0.0, r2 - 4.0));
-      t = mod2pi(std::atan2(eta, xi) + std::atan2(2.0, u));
-      if (!nonneg(t)) return false;
-      v = mod2pi(t - phi);
-      return nonneg(v);
-    }
-    case kLRL: {
-      const double xi = x - sp, eta = y - 1.0 + cp;
-      const double r = norm2(xi, eta);
-      if (r > 4.0 + kTol) return false;
-      u = -2.0 * std::asin(std::min(1.0, 0.25 * r));
-      t = mod2pi(std::atan2(eta, xi) + 0.5 * u + kPi);
-      if (!nonneg(t)) return false;
-      v = mod2pi(phi - t + u);
-      return true;
-    }
-    case kLRLRa:
-    case kLRLRb: {
-      const double xi = x + sp, eta = y - 1.0 - cp;
-      const double r = norm2(xi, eta);
-      double w;  // the tauOmega "v" argument
-      if ((code & 7) == kLRLRa) {
-        const double rho = 0.25 * (2.0 + r);
-        if (rho > 1.0 + kTol) return false;
-        u = std::acos(std::min(1.0, rho));
-        w = -u;
-      } else {
-        const double rho = (20.0 - r * r) / 16.0;
-        if (rho < -kTol || rho > 1.0 + kTol) return false;
-        u = -std::acos(std::clamp(rho, 0.0, 1.0));
-        w = u;
-      }
-      const double delta = mod2pi(u - w);
-      const double a = std::sin(u) - std::sin(delta);
-      const double b = std::cos(u) - std::cos(delta) - 1.0;
-      const double t1 = std::atan2(eta * a - xi * b, xi * a + eta * b);
-      const double t2 = 2.0 * (std::cos(delta) - std::cos(w) - std::cos(u)) + 3.0;
-      t = mod2pi(t2 < 0.0 ? t1 + kPi : t1);
-      if (!nonneg(t)) return false;
-      v = mod2pi(t - u + w - phi);
-      return (code & 7) == kLRLRa ? nonpos(v) : nonneg(v);
-    }
-    case kLRSL: {
-      const double xi = x - sp, eta = y - 1.0 + cp;
-      const double rho = norm2(xi, eta);
-      if (rho * rho < 8.0 - kTol) return false;
-      const double r = std::sqrt(std::max(0.0, rho * rho - 4.0));
-      u = 2.0 - r;
-      if (!nonpos_len(u)) return false;
-      t = mod2pi(std::atan2(eta, xi) + std::atan2(r, -2.0));
-      if (!nonneg(t)) return false;
-      v = mod2pi(phi - kHalfPi - t);
-      return nonpos(v);
-    }
-    case kLRSR: {
-      const double xi = x + sp, eta = y - 1.0 - cp;
-      const double rho = norm2(xi, eta);
-      if (rho < 2.0 - kTol) return false;
-      t = std::atan2(xi, -eta);
-      if (!nonneg(t)) return false;
-      u = 2.0 - rho;
-      if (!nonpos_len(u)) return false;
-      v = mod2pi(t + kHalfPi - phi);
-      return nonpos(v);
-    }
-    default: {
-      const double xi = x + sp, eta = y - 1.0 - cp;
-      const double rho = norm2(xi, eta);
-      if (rho * rho < 20.0 - kTol) return false;
-      u = 4.0 - std::sqrt(std::max(0.0, rho * rho - 4.0));
-      if (!nonpos_len(u)) return false;
-      t = mod2pi(std::atan2((4.0 - u) * xi - 2.0 * eta, -2.0 * xi + (u - 4.0) * eta));
-      if (!nonneg(t)) return false;
-      v = mod2pi(t - phi);
-      return nonneg(v);
-    }
-  }
-}
-
-//! Shortest candidate of `word`: its length (unit radius) and parameters.
-Best eval_word(int word, const Local& q) {
-  Best best;
-  if (word < 0 || word >= kWordCount) return best;
-  for (const auto& [code, vsign] : table().sources[word]) {
-    double t, u, v;
-    if (!eval_candidate(code, q, t, u, v)) continue;
-    if (vsign != 0 && (vsign < 0) != (v < 0.0)) continue;
-    Raw r = raw_segments(code, t, u, v);
-    best.offer(snapped_length(r), code, t, u, v);
-  }
-  return best;
-}
-
-Path make_path(const Best& b, double radius) {
-  Raw r = raw_segments(b.code, b.t, b.u, b.v);
-  snapped_length(r);
-  Path p;
-  p.radius = radius;
-  p.segments.reserve(r.n);
-  for (int i = 0; i < r.n; ++i) {
-    if (r.value[i] == 0.0) continue;
-    p.segments.push_back({r.steer[i], r.value[i] < 0.0 ? -1 : 1, std::abs(r.value[i]) * radius});
-  }
-  return p;
-}
-
-double final_length(const Best& b) {
-  Raw r = raw_segments(b.code, b.t, b.u, b.v);
-  return snapped_length(r);
 }
 
 }  // namespace
@@ -850,27 +487,6 @@ ShortestWord shortest_word(const Pose2& from, const Pose2& to, double radius, Pr
                  : pruning == Pruning::kFamilyBounds ? solve<1>(q)
                                                      : solve<2>(q);
   return {final_length(b) * radius, word_of(b.code, b.v)};
-}
-
-std::string_view word_name(int id) {
-  assert(id >= 0 && id < kWordCount);
-  return table().names[id];
-}
-
-int word_id(std::string_view name) {
-  for (int w = 0; w < kWordCount; ++w)
-    if (table().names[w] == name) return w;
-  return -1;
-}
-
-double word_length(int word, const Pose2& from, const Pose2& to, double radius) {
-  return eval_word(word, to_local(from, to, radius)).len * radius;
-}
-
-std::optional<Path> word_path(int word, const Pose2& from, const Pose2& to, double radius) {
-  const Best b = eval_word(word, to_local(from, to, radius));
-  if (!(b.len < kInf)) return std::nullopt;
-  return make_path(b, radius);
 }
 
 }  // namespace hrs::rs
