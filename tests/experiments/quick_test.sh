@@ -10,9 +10,8 @@ fails=0
 fail() { echo "FAIL $*"; fails=$((fails + 1)); }
 
 export HRSPACE_BIN="$bin"
-if ! "$src/scripts/reproduce.sh" --quick --jobs 2 --out "$tmp/q" >"$tmp/log" 2>&1; then
-  fail "reproduce.sh --quick exited $?"; cat "$tmp/log"
-fi
+rc=0; "$src/scripts/reproduce.sh" --quick --jobs 2 --out "$tmp/q" >"$tmp/log" 2>&1 || rc=$?
+if [ "$rc" != 0 ]; then fail "reproduce.sh --quick exited $rc"; cat "$tmp/log"; fi
 
 /usr/bin/python3 - "$tmp/q" <<'PY' || fails=$((fails + 1))
 import csv, os, sys
@@ -83,7 +82,8 @@ sys.exit(1 if bad else 0)
 PY
 
 # A rerun finds every run stored.
-if ! "$bin" experiment all --quick --out "$tmp/q" >"$tmp/again" 2>&1; then fail "rerun exited $?"; fi
+rc=0; "$bin" experiment all --quick --out "$tmp/q" >"$tmp/again" 2>&1 || rc=$?
+if [ "$rc" != 0 ]; then fail "rerun exited $rc"; cat "$tmp/again"; fi
 if grep -v " 0 run, " "$tmp/again" | grep -q "run,"; then fail "rerun ran something:"; cat "$tmp/again"; fi
 
 # One job or two: the same runs (a cheap study).

@@ -471,14 +471,22 @@ TEST(DesignLoop, RescueFindsToursACrippledRrtMissesAndLosesNone) {
       int found = 0;
       for (const auto& t : with.tours) found += t.found ? 1 : 0;
       EXPECT_EQ(found, with.final.tours_found) << what;
-      // Every found tour's legs join up and are certified free in the final
-      // layout, by the C-space's pose checks every 2 cm.
+      // Every found tour's legs join up (each path driven from its start
+      // ends at its goal, the next leg starts there) and are free in the
+      // final layout by the C-space's pose checks every 2 cm.
       const geometry::CSpace cspace(with.layout);
       for (const auto& t : with.tours) {
         if (!t.found) continue;
-        for (const auto& leg : t.legs)
+        for (std::size_t i = 0; i < t.legs.size(); ++i) {
+          const auto& leg = t.legs[i];
+          EXPECT_LE(geometry::pose_gap(rs::end_pose(leg.from, leg.path), leg.to), 1e-6)
+              << what << ": leg " << i << " does not end at its goal";
+          if (i + 1 < t.legs.size())
+            EXPECT_LE(geometry::pose_gap(leg.to, t.legs[i + 1].from), 1e-9)
+                << what << ": legs " << i << " and " << i + 1 << " do not join";
           for (const geometry::Pose2& q : rs::sample(leg.from, leg.path, 0.02))
             ASSERT_TRUE(cspace.is_free(q)) << what << ": a rescued tour collides";
+        }
       }
       rescued += with.rescue.unblocked + with.rescue.tours_found;
     }

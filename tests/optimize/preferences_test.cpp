@@ -336,6 +336,15 @@ TEST(Preferences, SwapsPutEachBackWhereTheOthersWas) {
   EXPECT_EQ(cases, 8000);
 }
 
+// The annealer with preference moves keeps its state valid: a proposal the
+// validity check refuses is never costed or applied, and a rejected one is
+// undone (the callbacks below apply and undo moves on `work`, which the
+// exact checks then re-read after every iteration). The validity check is
+// the product's own, so this tests the chain's protocol, not the pose
+// generators; that they give valid poses often enough shows in the count of
+// preference moves made (an invalid draw is redrawn, then replaced by an
+// ordinary move), which must exceed 500 of the 1350 iterations that ask for
+// one.
 TEST(Preferences, PreferenceMovesNeverLeaveTheLayoutInvalid) {
   for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
     const Scene scene = geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Designs with the proposed planner (paper §V, planning/reuse.h): with every
 // reuse technique off it is the baseline exactly; with all on, the same seed
-// gives the same layout and tours for 1 and 2 threads, every found tour is
-// re-validated, and report.json carries the reuse counters.
+// gives the same layout and tours for 1 and 2 threads, every waypoint of a
+// found tour is free by the exact CGAL reference (not the C-space the
+// planners use), and report.json carries the reuse counters.
 
 #include <gtest/gtest.h>
 
@@ -15,6 +16,7 @@
 #include "optimize/design.h"
 #include "optimize/design_io.h"
 #include "planning/reuse.h"
+#include "tests/support/reference.h"
 
 namespace hrs::optimize {
 namespace {
@@ -55,6 +57,7 @@ TEST(ProposedDesign, AllReuseOffEqualsBaselineExactly) {
 }
 
 TEST(ProposedDesign, SameSeedSameBytesForOneAndTwoThreads) {
+  int found = 0;
   for (const std::string name : {"living_room", "bedroom"}) {
     const geometry::Scene s = scene(name);
     const DesignResult one = run(s, true, "all", 1);
@@ -70,7 +73,21 @@ TEST(ProposedDesign, SameSeedSameBytesForOneAndTwoThreads) {
     // Reuse actually happened.
     EXPECT_GT(one.counters.legs_database, 0u) << name;
     EXPECT_EQ(one.tours_invalidated, 0) << name;
+    // The found tours drive through free space (waypoints 5 cm apart).
+    const test_support::ExactReference reference(one.layout);
+    long waypoints = 0, blocked = 0;
+    for (const planning::Tour& t : one.tours) {
+      if (!t.found) continue;
+      ++found;
+      for (const auto& leg : t.legs)
+        for (const geometry::Pose2& w : leg.waypoints) {
+          ++waypoints;
+          if (!reference.pose_free(w)) ++blocked;
+        }
+    }
+    EXPECT_EQ(blocked, 0) << name << ": of " << waypoints << " waypoints";
   }
+  EXPECT_GT(found, 0);
 }
 
 TEST(ProposedDesign, ReportCarriesTheReuseCounters) {

@@ -134,7 +134,7 @@ TEST(ReachGate, NeverRefusesAFoundLegAndFoundPathsStayInTheDoorsReachableSet) {
         for (std::size_t i = 0; i < a.legs.size(); ++i) {
           EXPECT_EQ(a.legs[i].from, b.legs[i].from) << what;
           EXPECT_EQ(a.legs[i].to, b.legs[i].to) << what;
-          EXPECT_EQ(a.legs[i].path.segments.size(), b.legs[i].path.segments.size()) << what;
+          EXPECT_EQ(a.legs[i].path.segments, b.legs[i].path.segments) << what;
         }
         EXPECT_EQ(a.stats.legs_failed, b.stats.legs_failed) << what;
         (a.found ? n.tours_found : n.tours_unfound) += 1;

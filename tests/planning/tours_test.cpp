@@ -119,17 +119,16 @@ TEST(TourPlanner, FoundToursJoinStopFacingObjectsOnAllowedSidesAndAreFree) {
   EXPECT_GE(found_anywhere, 12);
 }
 
-TEST(TourPlanner, SameSeedSameTourAndJsonHasTheDesignShapes) {
-  const auto files = test_support::planning_scene_files();
-  ASSERT_FALSE(files.empty());
-  const geometry::Scene scene = geometry::load_scene(files.front());
-  const geometry::CSpace cspace(scene);
-  std::mt19937_64 rng(5);
-  const auto seq = random_sequence(scene, 3, rng);
-  TourPlanner a(scene, cspace, {}, 7), b(scene, cspace, {}, 7);
-  const Tour ta = a.plan(seq), tb = b.plan(seq);
-  ASSERT_EQ(ta.found, tb.found);
+//! Two planners with one seed give the same tour, and its JSON has the
+//! design's shapes; checked on a tour that is found, so that the
+//! comparisons cover legs.
+void expect_same_tour_and_json(const geometry::Scene& scene, const geometry::CSpace& cspace,
+                               const std::vector<std::string>& seq, const Tour& ta) {
+  TourPlanner b(scene, cspace, {}, 7);
+  const Tour tb = b.plan(seq);
+  ASSERT_TRUE(tb.found);
   ASSERT_EQ(ta.legs.size(), tb.legs.size());
+  ASSERT_FALSE(ta.legs.empty());
   for (std::size_t i = 0; i < ta.legs.size(); ++i) {
     EXPECT_EQ(ta.legs[i].path.segments, tb.legs[i].path.segments);
     EXPECT_EQ(ta.legs[i].to, tb.legs[i].to);
@@ -138,25 +137,25 @@ TEST(TourPlanner, SameSeedSameTourAndJsonHasTheDesignShapes) {
   const auto& t = j.at("tours").at(0);
   EXPECT_EQ(t.at("sequence").get<std::vector<std::string>>(), seq);
   EXPECT_EQ(t.at("likelihood").get<double>(), 0.25);
-  EXPECT_EQ(t.at("found").get<bool>(), ta.found);
+  EXPECT_TRUE(t.at("found").get<bool>());
   for (const char* m : {"length", "rotation", "clearance"})
     EXPECT_TRUE(t.at("metrics").contains(m));
-  if (ta.found) {
-    const auto& leg = t.at("legs").at(0);
-    EXPECT_EQ(leg.at("from").size(), 3u);
-    EXPECT_EQ(leg.at("to").size(), 3u);
-    EXPECT_FALSE(leg.at("waypoints").empty());
-    for (const auto& s : leg.at("segments")) {
-      const std::string steer = s.at("steer");
-      EXPECT_TRUE(steer == "L" || steer == "S" || steer == "R");
-      EXPECT_TRUE(s.at("gear") == 1 || s.at("gear") == -1);
-      EXPECT_GE(s.at("length").get<double>(), 0.0);
-    }
+  ASSERT_EQ(t.at("legs").size(), ta.legs.size());
+  const auto& leg = t.at("legs").at(0);
+  EXPECT_EQ(leg.at("from").size(), 3u);
+  EXPECT_EQ(leg.at("to").size(), 3u);
+  EXPECT_FALSE(leg.at("waypoints").empty());
+  ASSERT_FALSE(leg.at("segments").empty());
+  for (const auto& s : leg.at("segments")) {
+    const std::string steer = s.at("steer");
+    EXPECT_TRUE(steer == "L" || steer == "S" || steer == "R");
+    EXPECT_TRUE(s.at("gear") == 1 || s.at("gear") == -1);
+    EXPECT_GE(s.at("length").get<double>(), 0.0);
   }
-  // The `plan` object.
+  // The `plan` object, for the tour's first leg.
   LegPlanner planner(scene, cspace);
   const Pose2 from = geometry::door_start_pose(scene);
-  const Pose2 to = ta.found ? ta.legs.front().to : from;
+  const Pose2 to = ta.legs.front().to;
   const LegResult r = planner.plan(from, to, 3);
   const auto p = nlohmann::json::parse(plan_json(from, to, r, scene.wheelchair.turning_radius));
   for (const char* f : {"found", "from", "to", "radius", "length", "segments", "waypoints",
@@ -166,6 +165,27 @@ TEST(TourPlanner, SameSeedSameTourAndJsonHasTheDesignShapes) {
   if (r.found) {
     EXPECT_NEAR(p.at("length").get<double>(), r.path.length(), 1e-12);
   }
+}
+
+TEST(TourPlanner, SameSeedSameTourAndJsonHasTheDesignShapes) {
+  const auto files = test_support::planning_scene_files();
+  ASSERT_FALSE(files.empty());
+  // The first scene, in file order, whose seeded draw of three objects the
+  // planner finds (the shipped bedroom's is not: its bed has no reachable
+  // goal pose until a design moves it).
+  for (const auto& file : files) {
+    const geometry::Scene scene = geometry::load_scene(file);
+    const geometry::CSpace cspace(scene);
+    std::mt19937_64 rng(5);
+    const auto seq = random_sequence(scene, 3, rng);
+    TourPlanner a(scene, cspace, {}, 7);
+    const Tour ta = a.plan(seq);
+    if (!ta.found) continue;
+    RecordProperty("scene", scene.name);
+    expect_same_tour_and_json(scene, cspace, seq, ta);
+    return;
+  }
+  FAIL() << "no scene's seeded tour of three objects was found";
 }
 
 }  // namespace

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 import hrspace
-from conftest import BEDROOM, cli_error
+from conftest import BEDROOM, cli_error, run_cli
 
 
 def test_load_from_path_pathlike_and_json_text_agree():
@@ -136,6 +136,9 @@ def test_furniture_flush_with_a_wall_is_valid_and_past_it_is_not():
 def test_version_is_the_commands():
     assert hrspace.__version__.count(".") == 2
     assert all(part.isdigit() for part in hrspace.__version__.split("."))
+    status, out, _ = run_cli("--version")  # "hrspace X.Y.Z (commit ...)"
+    assert status == 0
+    assert out.split()[:2] == ["hrspace", hrspace.__version__]
 
 
 def test_special_files_and_nul_paths_are_value_errors():

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// design.html's data (view/viewer.h) against independent answers: the
-// cusps against the gear changes of each leg's segments, driven here by a
-// separate arc-and-line integrator; the footprints against the scene's
-// footprints; the route width against access::route_width_at; the path
-// against tours.json's waypoints. And the page: the same bytes for any
+// design.html's data (view/viewer.h): the cusps against the gear changes
+// of each leg's segments, driven here by a separate arc-and-line
+// integrator; the footprints against the objects' local footprints moved
+// to their poses here; the path against the tours' waypoints. The route
+// width is the value of access::route_width_at (the function the viewer
+// calls; tests/access checks the width itself) at every 7th path point. And the page: the same bytes for any
 // thread count, and a scene name that tries to close the data's <script>.
 #include <gtest/gtest.h>
 
@@ -119,12 +120,15 @@ TEST_F(ViewerTest, ObjectsAreTheLayoutsFootprints) {
   const json data = json::parse(hrs::view::design_data(*result_, "t", ""));
   ASSERT_EQ(data["objects"].size(), result_->layout.objects.size());
   for (std::size_t i = 0; i < result_->layout.objects.size(); ++i) {
-    const auto world = hrs::geometry::world_footprint(result_->layout.objects[i]);
+    // The local footprint rotated by the heading and moved to the position.
+    const auto& o = result_->layout.objects[i];
+    const double c = std::cos(o.pose.theta), s = std::sin(o.pose.theta);
     const json& poly = data["objects"][i]["poly"];
-    ASSERT_EQ(poly.size(), world.size());
-    for (std::size_t v = 0; v < world.size(); ++v) {
-      EXPECT_NEAR(poly[v][0].get<double>(), world[v].x, 1e-4);
-      EXPECT_NEAR(poly[v][1].get<double>(), world[v].y, 1e-4);
+    ASSERT_EQ(poly.size(), o.footprint.size());
+    for (std::size_t v = 0; v < o.footprint.size(); ++v) {
+      const double lx = o.footprint[v].x, ly = o.footprint[v].y;
+      EXPECT_NEAR(poly[v][0].get<double>(), o.pose.x + c * lx - s * ly, 1e-4);
+      EXPECT_NEAR(poly[v][1].get<double>(), o.pose.y + s * lx + c * ly, 1e-4);
     }
   }
   int unmet = 0;
