@@ -229,11 +229,21 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       if (!unmet) continue;
       const int object = static_cast<int>(i);
       bool kept = false;
-      for (const geometry::Pose2& to : preferred_poses(scene, model, poses, object)) {
+      // Its preferred poses, then turned in place to the heading its
+      // nearest wall asks for: that meets the angle where no spot at the
+      // wanted distance is free (a bed left in the room's middle, side on
+      // to its wall). A pose that does not fit is nudged (nudge()).
+      std::vector<geometry::Pose2> wanted = preferred_poses(scene, model, poses, object);
+      const geometry::Object& o = scene.objects[i];
+      if (o.wall && o.wall->distance && o.wall->angle) {
+        const double normal = model.wall_normal_angle(model.nearest_wall(object, poses[i]));
+        wanted.push_back({poses[i].x, poses[i].y, geometry::wrap_angle(normal + *o.wall->angle)});
+      }
+      for (geometry::Pose2 to : wanted) {
         if (out.tried >= max_tries || (stop && stop->load())) break;
         std::vector<geometry::Pose2> p = poses;
         p[i] = to;
-        if (!hooks.valid(p, object)) continue;
+        if (!hooks.valid(p, object) && !nudge(p, object, to)) continue;
         const PreferenceReport next = check_preferences(scene, model, p);
         // Alone, or with one relation partner moved to one of its own
         // preferred poses (a bed turned round with the TV that faces it).
@@ -328,7 +338,10 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // Square to the room: an object whose heading no preference fixes is
   // turned to the nearest heading parallel or perpendicular to its nearest
   // wall (a lamp at 10° looks wrong to a designer), when the layout stays
-  // valid, no preference is lost and the tours found stay found.
+  // valid, no preference is lost, the tours found stay found and the total
+  // cost is not higher (the heading is cosmetic; on the 80 rooms of the
+  // generalization study, squaring at any cost raised their summed cost
+  // by 6 %).
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const int object = static_cast<int>(i);
     if (!movable[i] || heading_fixed(scene, object) || out.tried >= max_tries ||
@@ -344,7 +357,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     PreferenceReport next = check_preferences(scene, model, p);
     if (score(next) < score(report)) continue;
     ++out.tried;
-    if (try_moves({{object, p[i]}}, next)) ++out.squared;
+    if (try_moves({{object, p[i]}}, next, true)) ++out.squared;
   }
   return out;
 }

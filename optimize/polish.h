@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The final polish of a design (docs/optimize.md "Preferences"): after the
 // annealing, each movable object with an unmet preference is tried at the
-// poses that would meet it (optimize/preferences.h, preferred_poses), one
-// at a time, alone or with one relation partner; when none is kept, at up
+// poses that would meet it (optimize/preferences.h, preferred_poses; a
+// wall object also turned in place to the heading its nearest wall asks
+// for; a pose that does not fit nudged up to 30 cm), one at a time, alone
+// or with one relation partner; when none is kept, at up
 // to three places along the walls (wall_slides) that score higher, those
 // clear of the kept tours' corridor first; when none of those is kept,
 // exchanged with another movable object (preferences.h, swaps), up to two
@@ -19,7 +21,9 @@
 // no longer fits is nudged up to 30 cm), the best two placements planned, on
 // the same conditions.
 // Last, each movable object whose heading no preference fixes is turned
-// square to its nearest wall, on the same conditions (score not lowered).
+// square to its nearest wall, on the same conditions (score not lowered),
+// and only when the total cost is not higher: a heading no preference asks
+// for is not worth a longer tour.
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order), so the result is a function of the layout and the planner's
 // seeds, whatever the thread count.

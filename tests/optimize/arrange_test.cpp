@@ -456,10 +456,11 @@ PolishHooks exact_hooks(geometry::Scene& scratch) {
 }
 
 // A bench along the wall wants a quarter turn to a fixed lamp. Turned in
-// place it crosses the wall; no single move finds another place (it wants
-// no wall, and nothing else moves). The group turn nudges it off the wall,
-// by at most 30 cm, and keeps it.
-TEST(Polish, AGroupMemberThatNoLongerFitsOnceTurnedIsNudged) {
+// place it crosses the wall (it wants no wall, and nothing else moves). The
+// polish nudges it off the wall, by at most 30 cm, and keeps it: the
+// single-object pass does, since it nudges every preferred pose that does
+// not fit (before, only the group turn did).
+TEST(Polish, AnObjectThatNoLongerFitsOnceTurnedIsNudged) {
   const geometry::Scene scene = geometry::parse_scene(R"({
     "format": "hrspace-scene/1", "name": "bench",
     "room": {"size": [6, 4]},
@@ -488,8 +489,8 @@ TEST(Polish, AGroupMemberThatNoLongerFitsOnceTurnedIsNudged) {
   hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
   CostTerms terms = two_tours_found();
   const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
-  EXPECT_EQ(r.kept, 0);
-  EXPECT_EQ(r.turned, 1);
+  EXPECT_EQ(r.kept, 1);
+  EXPECT_EQ(r.turned, 0);
   EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
   const double moved = std::hypot(poses[0].x - 3.0, poses[0].y - 0.3);
   EXPECT_GT(moved, 0.0);
@@ -497,6 +498,55 @@ TEST(Polish, AGroupMemberThatNoLongerFitsOnceTurnedIsNudged) {
   geometry::Scene out = scene;
   out.objects[0].pose = poses[0];
   EXPECT_EQ(layout_violation(out), "");
+}
+
+
+// A bed in the room's middle faces its nearest wall (the bottom one) side on
+// (90° off its wall angle), and fixed shelves 0.5 m deep line the walls
+// but for the door and its corner, too small for the bed, so no pose at its
+// wall distance is free, not even nudged by 30 cm, and
+// nothing else moves. Turned in place to the heading the bottom wall asks
+// for, it meets the angle and stays where it is (the distance stays unmet).
+TEST(Polish, TurnsInPlaceWhereNoSpotAtItsWallIsFree) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "lined",
+    "room": {"size": [5, 4]},
+    "door": {"center": [4.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "bed", "size": [2.0, 1.4], "pose": [2.5, 1.9, 0], "wall": {"distance": 0, "angle": 0}},
+      {"id": "bottom", "size": [3.5, 0.5], "pose": [1.75, 0.25, 0], "fixed": true},
+      {"id": "top", "size": [5.0, 0.5], "pose": [2.5, 3.75, 0], "fixed": true},
+      {"id": "left", "size": [0.5, 3.0], "pose": [0.25, 2.0, 0], "fixed": true},
+      {"id": "right", "size": [0.5, 2.2], "pose": [4.75, 2.4, 0], "fixed": true}
+    ],
+    "activity": {"transitions": {"door": {"bed": 1.0}, "bed": {"top": 1.0}, "top": {"bed": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "lined");
+  ASSERT_EQ(layout_violation(scene), "");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable{true, false, false, false, false};
+  std::vector<Pose2> poses;
+  for (const auto& o : scene.objects) poses.push_back(o.pose);
+  const PreferenceReport before = check_preferences(scene, model, poses);
+  ASSERT_EQ(before.total, 2);
+  ASSERT_EQ(before.met, 0);
+  ASSERT_NEAR(before.worst_angle, std::numbers::pi / 2, 1e-9);
+  geometry::Scene scratch = scene;
+  PolishHooks hooks = exact_hooks(scratch);
+  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
+  CostTerms terms = two_tours_found();
+  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  EXPECT_EQ(r.kept, 1);
+  EXPECT_EQ(r.slid + r.swapped + r.turned, 0);
+  EXPECT_EQ(poses[0].position(), scene.objects[0].pose.position());
+  EXPECT_NEAR(geometry::wrap_angle(poses[0].theta), std::numbers::pi / 2, 1e-9);
+  const PreferenceReport after = check_preferences(scene, model, poses);
+  EXPECT_EQ(after.met, 1);
+  EXPECT_NEAR(after.worst_angle, 0.0, 1e-9);
+  for (std::size_t i = 0; i < poses.size(); ++i) scratch.objects[i].pose = poses[i];
+  EXPECT_EQ(layout_violation(scratch), "");
 }
 
 
