@@ -180,7 +180,9 @@ TEST(Arrange, ShippedRoomsStayValidLowerTheirInteriorCostAndRepeat) {
       geometry::Scene out = scene;
       for (std::size_t i = 0; i < input.size(); ++i) {
         out.objects[i].pose = a.poses[i];
-        if (!movable[i]) EXPECT_EQ(a.poses[i], input[i]) << what;
+        if (!movable[i]) {
+          EXPECT_EQ(a.poses[i], input[i]) << what;
+        }
       }
       EXPECT_EQ(layout_violation(out), "") << what;
       EXPECT_LE(a.interior_after, a.interior_before) << what;
@@ -333,7 +335,9 @@ TEST(Polish, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
       const std::string what = std::string(file) + " seed " + std::to_string(seed);
       const int after = polish_score(check_preferences(scene, model, poses));
       EXPECT_GE(after, before) << what;
-      if (r.kept + r.turned > 0) EXPECT_GT(after, before) << what;
+      if (r.kept + r.turned > 0) {
+        EXPECT_GT(after, before) << what;
+      }
       EXPECT_FALSE(lost_kept) << what;
       EXPECT_EQ(terms.tours_found, 10) << what;
       EXPECT_EQ(placed, poses) << what;
