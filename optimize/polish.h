@@ -21,9 +21,7 @@
 // no longer fits is nudged up to 30 cm), the best two placements planned, on
 // the same conditions.
 // Last, each movable object whose heading no preference fixes is turned
-// square to its nearest wall, on the same conditions (score not lowered),
-// and only when the total cost is not higher: a heading no preference asks
-// for is not worth a longer tour.
+// square to its nearest wall, on the same conditions (score not lowered).
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order), so the result is a function of the layout and the planner's
 // seeds, whatever the thread count.
