@@ -158,6 +158,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"kept", result.polish.kept},
             {"slid", result.polish.slid},
             {"swapped", result.polish.swapped},
+            {"evicted", result.polish.evicted},
             {"turned", result.polish.turned},
             {"squared", result.polish.squared},
             {"tours_found_before", result.polish.tours_found_before},

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 
+#include "geometry/polygon_ops.h"
 #include "optimize/arrange.h"
 #include "optimize/preferences.h"
 
@@ -49,10 +50,36 @@ constexpr double kGrossAngle = 20.0 * std::numbers::pi / 180.0;
 //! preference grossly missed. A layout that meets an angle at the price of
 //! a distance is better (a designer sees a wrong heading at a glance); one
 //! that meets a distance at the price of a gross angle is not.
-int score(const PreferenceReport& r) {
-  int gross = 0;
-  for (const PreferenceCheck& c : r.checks) gross += c.angular() && c.residual > kGrossAngle;
-  return r.met - gross;
+int gross(const PreferenceReport& r) {
+  int n = 0;
+  for (const PreferenceCheck& c : r.checks) n += c.angular() && c.residual > kGrossAngle;
+  return n;
+}
+int score(const PreferenceReport& r) { return r.met - gross(r); }
+
+//! Whether an angle preference of object `id` is grossly missed.
+bool grossly_off(const PreferenceReport& r, const std::string& id) {
+  return std::any_of(r.checks.begin(), r.checks.end(), [&](const PreferenceCheck& c) {
+    return c.angular() && c.residual > kGrossAngle && (c.object == id || c.other == id);
+  });
+}
+
+//! The other objects whose footprints `object`'s overlaps at `poses`
+//! (beyond contact), ascending; at most three are listed.
+std::vector<int> holders(const geometry::Scene& scene, const std::vector<geometry::Pose2>& poses,
+                         int object) {
+  geometry::Object o = scene.objects[static_cast<std::size_t>(object)];
+  o.pose = poses[static_cast<std::size_t>(object)];
+  const geometry::Polygon f = geometry::world_footprint(o);
+  std::vector<int> found;
+  for (std::size_t j = 0; j < poses.size() && found.size() < 3; ++j) {
+    if (static_cast<int>(j) == object) continue;
+    geometry::Object other = scene.objects[j];
+    other.pose = poses[j];
+    if (geometry::overlap_beyond_contact(f, geometry::world_footprint(other)))
+      found.push_back(static_cast<int>(j));
+  }
+  return found;
 }
 
 //! Spacing of the places tried along each wall, metres, and how many of
@@ -62,6 +89,11 @@ constexpr std::size_t kSlideTries = 3;
 
 //! How many of the best exchanges of places are planned per object.
 constexpr std::size_t kSwapTries = 2;
+
+//! Held places looked at per object whose heading is grossly off, and how
+//! many of the best evictions of their holders are planned.
+constexpr int kEvictPlaces = 16;
+constexpr std::size_t kEvictTries = 4;
 
 //! Places along the walls tried per wall object of a group turn, and how
 //! many of a turn's best placements are planned.
@@ -196,7 +228,10 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // places): those clear of the tours' corridor first (they seldom cost a
   // tour), then the highest score, then the order found (the nearest
   // slide, the lower partner index). The best `tries` are planned in turn
-  // until one is kept (try_moves); true when one was.
+  // until one is kept (try_moves); true when one was. With `no_costlier`
+  // a candidate is kept only at no higher total cost, unless it mends a
+  // gross angle miss: a wrong heading is seen at a glance, a longer tour
+  // is not.
   struct Candidate {
     bool clear;
     PreferenceReport report;
@@ -212,7 +247,8 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
       if (out.tried >= max_tries || (stop && stop->load())) break;
       ++out.tried;
-      if (try_moves(candidates[k].move, candidates[k].report, no_costlier)) return true;
+      const bool capped = no_costlier && gross(candidates[k].report) >= gross(report);
+      if (try_moves(candidates[k].move, candidates[k].report, capped)) return true;
     }
     return false;
   };
@@ -290,8 +326,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       if (out.tried >= max_tries || (stop && stop->load())) continue;
       // Every place it could take is held: exchange places with another
       // movable object (swaps()). Kept only when the total cost is not
-      // higher: two objects moved at once can lengthen every tour through
-      // them. A later pass can then bring a partner near.
+      // higher, or when it mends a gross angle miss: two objects moved at
+      // once can lengthen every tour through them. A later pass can then
+      // bring a partner near.
       std::vector<Candidate> exchanges;
       for (std::size_t j = 0; j < poses.size() && !(stop && stop->load()); ++j) {
         if (j == i || !movable[j]) continue;
@@ -306,7 +343,114 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           exchanges.push_back({c, std::move(next), std::move(move)});
         }
       }
-      if (try_best(exchanges, kSwapTries, true)) ++out.kept, ++out.swapped;
+      if (try_best(exchanges, kSwapTries, true)) {
+        ++out.kept, ++out.swapped;
+        continue;
+      }
+      if (out.tried >= max_tries || (stop && stop->load()) || !grossly_off(report, id)) continue;
+      // A heading still grossly off (> 20°): the places that mend it (its
+      // preferred poses, then its places along the walls, nearest first;
+      // alone or with a partner, below). A free one is a candidate as it
+      // is (the slides above planned only the three best-scoring); one
+      // held by one or two movable objects
+      // (at most kEvictPlaces such) is a candidate with the holders moved
+      // away: to their own wall places or preferred poses, or to the place
+      // the object leaves (a second holder to the first of those that
+      // fits). A move of three that no exchange makes. Candidates mend a
+      // gross miss and score no lower (a preference of a holder may be
+      // traded for the heading, as the score counts a gross miss twice);
+      // they are kept at any cost when every tour is still found.
+      std::vector<Candidate> evictions;
+      int places = 0;
+      std::vector<geometry::Pose2> targets = preferred_poses(scene, model, poses, object);
+      for (const geometry::Pose2& at : wall_slides(scene, model, poses, object, kSlideStep))
+        targets.push_back(at);
+      for (const geometry::Pose2& to : targets) {
+        if (places >= kEvictPlaces || (stop && stop->load())) break;
+        std::vector<geometry::Pose2> p = poses;
+        p[i] = to;
+        // The object alone, or with the first relation partner (ascending)
+        // at the first of its preferred poses that mends the miss with it
+        // (a desk moved to another wall with the chair that faces it).
+        GroupMove base{{object, to}};
+        if (gross(check_preferences(scene, model, p)) >= gross(report)) {
+          for (const int f : partners(scene, object)) {
+            if (!movable[static_cast<std::size_t>(f)] || base.size() > 1) continue;
+            for (const geometry::Pose2& at : preferred_poses(scene, model, p, f)) {
+              std::vector<geometry::Pose2> pf = p;
+              pf[static_cast<std::size_t>(f)] = at;
+              if (gross(check_preferences(scene, model, pf)) < gross(report)) {
+                base.push_back({f, at});
+                break;
+              }
+            }
+          }
+          if (base.size() == 1) continue;
+          p[static_cast<std::size_t>(base[1].first)] = base[1].second;
+        }
+        const auto fits = [&](const std::vector<geometry::Pose2>& q) {
+          return std::all_of(base.begin(), base.end(),
+                             [&](const auto& m) { return hooks.valid(q, m.first); });
+        };
+        const auto clear_all = [&](const GroupMove& m) {
+          return std::all_of(m.begin(), m.end(),
+                             [&](const auto& e) { return clear(e.first, e.second); });
+        };
+        if (hooks.valid(p, object)) {
+          if (!fits(p)) continue;
+          PreferenceReport next = check_preferences(scene, model, p);
+          if (score(next) >= score(report))
+            evictions.push_back({clear_all(base), std::move(next), base});
+          continue;
+        }
+        const std::vector<int> held = holders(scene, p, object);
+        if (held.empty() || held.size() > 2 || std::any_of(held.begin(), held.end(), [&](int j) {
+              return !movable[static_cast<std::size_t>(j)] ||
+                     std::any_of(base.begin(), base.end(),
+                                 [&](const auto& m) { return m.first == j; });
+            }))
+          continue;
+        ++places;
+        // Where holder j may go in layout q: its wall places, its preferred
+        // poses, and the object's old place (its own heading, or the
+        // object's).
+        const auto away = [&](const std::vector<geometry::Pose2>& q, int j) {
+          std::vector<geometry::Pose2> out_places = wall_slides(scene, model, q, j, kSlideStep);
+          for (const geometry::Pose2& at : preferred_poses(scene, model, q, j))
+            out_places.push_back(at);
+          const geometry::Pose2& was = poses[i];
+          out_places.push_back({was.x, was.y, q[static_cast<std::size_t>(j)].theta});
+          out_places.push_back(was);
+          return out_places;
+        };
+        const int j = held[0];
+        for (const geometry::Pose2& at : away(p, j)) {
+          std::vector<geometry::Pose2> q = p;
+          q[static_cast<std::size_t>(j)] = at;
+          if (!hooks.valid(q, j)) continue;
+          GroupMove move = base;
+          move.push_back({j, at});
+          if (held.size() == 2) {
+            // The second holder at its first place that fits.
+            const int k = held[1];
+            bool placed = false;
+            for (const geometry::Pose2& at_k : away(q, k)) {
+              q[static_cast<std::size_t>(k)] = at_k;
+              if (hooks.valid(q, k) && hooks.valid(q, j)) {
+                move.push_back({k, at_k});
+                placed = true;
+                break;
+              }
+            }
+            if (!placed) continue;
+          }
+          if (!fits(q)) continue;
+          PreferenceReport next = check_preferences(scene, model, q);
+          if (score(next) < score(report) || gross(next) >= gross(report)) continue;
+          evictions.push_back({clear_all(move), std::move(next), std::move(move)});
+        }
+      }
+      if (try_best(evictions, kEvictTries, true)) ++out.kept, ++out.evicted;
     }
   }
   // Groups linked by relation angles turn as one body (a bed, the TV that

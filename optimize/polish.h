@@ -10,9 +10,16 @@
 // clear of the kept tours' corridor first; when none of those is kept,
 // exchanged with another movable object (preferences.h, swaps), up to two
 // exchanges that score higher planned (kept only at no higher total
-// cost). A move is kept when the layout
+// cost, unless it mends an angle more than 20° off). When the object's
+// heading is still more than 20° off, the places that would mend it
+// (alone or with one relation partner at one of its preferred poses) are
+// freed: one or two movable objects holding such a place move to their own
+// wall places or preferred poses, or to the place the object leaves (an
+// eviction; the best four planned, kept at any cost when they score no
+// lower). A move is kept when the layout
 // is valid, every tour found before is still found (the tours are planned
-// again) and the preference score rises: preferences met, less one for
+// again) and the preference score rises (an eviction's: does not fall,
+// and fewer angles are more than 20° off): preferences met, less one for
 // each angle preference more than 20° off.
 // Then each group of objects linked by relation angles (heading_groups) with
 // an unmet relation angle is tried turned as one body (group_turns; a wall
@@ -56,6 +63,7 @@ struct PolishResult {
   int kept = 0;   //!< poses kept that meet more preferences
   int slid = 0;     //!< of `kept`, poses found sliding along a wall
   int swapped = 0;  //!< of `kept`, exchanges of two objects' places
+  int evicted = 0;  //!< of `kept`, a held place freed by moving its holder
   int turned = 0;   //!< heading groups turned as one body (group_turns)
   int squared = 0;  //!< objects turned square to their wall (no heading preference)
 };
