@@ -347,10 +347,12 @@ class DesignRun {
     result_.polish.met_before = check_preferences(scene_, model_, poses).met;
     PolishHooks hooks;
     hooks.valid = valid_;
+    hooks.fits = [this](const std::vector<Pose2>& p, int moved) { return round_.fits(p, moved); };
     hooks.place = move_;
     hooks.plan = [this](const std::vector<Pose2>& p) { return replan(p); };
     hooks.kept = [this] { result_.tours = round_.tours(); };
     hooks.tours = [this]() -> const std::vector<planning::Tour>& { return result_.tours; };
+    hooks.seed = splitmix64(options_.seed ^ 0x706f6c697368ULL);
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
     static_cast<PolishResult&>(result_.polish) = pr;

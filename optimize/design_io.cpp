@@ -159,6 +159,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"slid", result.polish.slid},
             {"swapped", result.polish.swapped},
             {"evicted", result.polish.evicted},
+            {"rearranged", result.polish.rearranged},
             {"turned", result.polish.turned},
             {"squared", result.polish.squared},
             {"tours_found_before", result.polish.tours_found_before},

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <random>
 
 #include "geometry/polygon_ops.h"
+#include "geometry/random.h"
 #include "optimize/arrange.h"
 #include "optimize/preferences.h"
 
@@ -57,6 +59,17 @@ int gross(const PreferenceReport& r) {
 }
 int score(const PreferenceReport& r) { return r.met - gross(r); }
 
+//! The objects at the other end of `id`'s grossly missed angle preferences.
+std::vector<std::string> gross_others(const PreferenceReport& r, const std::string& id) {
+  std::vector<std::string> out;
+  for (const PreferenceCheck& c : r.checks) {
+    if (!c.angular() || c.residual <= kGrossAngle || c.other.empty()) continue;
+    if (c.object == id) out.push_back(c.other);
+    if (c.other == id) out.push_back(c.object);
+  }
+  return out;
+}
+
 //! Whether an angle preference of object `id` is grossly missed.
 bool grossly_off(const PreferenceReport& r, const std::string& id) {
   return std::any_of(r.checks.begin(), r.checks.end(), [&](const PreferenceCheck& c) {
@@ -94,6 +107,19 @@ constexpr std::size_t kSwapTries = 2;
 //! many of the best evictions of their holders are planned.
 constexpr int kEvictPlaces = 16;
 constexpr std::size_t kEvictTries = 4;
+
+//! The rearrangement (a search over the preferences alone, no planning):
+//! chains run and planned, Metropolis steps per movable object (at most
+//! kRearrangeMaxSteps a chain), the temperature's start and end (in units
+//! of the score), what a metre moved costs, and what a moved object in the
+//! kept tours' corridor costs.
+constexpr int kRearrangeChains = 4;
+constexpr int kRearrangeStepsPerObject = 400;
+constexpr int kRearrangeMaxSteps = 2000;
+constexpr double kRearrangeHot = 1.0;
+constexpr double kRearrangeCold = 0.1;
+constexpr double kRearrangeMetre = 0.05;
+constexpr double kRearrangeInCorridor = 0.5;
 
 //! Places along the walls tried per wall object of a group turn, and how
 //! many of a turn's best placements are planned.
@@ -385,8 +411,35 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
               }
             }
           }
-          if (base.size() == 1) continue;
-          p[static_cast<std::size_t>(base[1].first)] = base[1].second;
+          if (base.size() == 1) {
+            // Or with its side of the relations: the movable partners other
+            // than those its gross misses are with, moved rigidly with it
+            // (a desk taken to the wardrobe's wall with the chair before
+            // it), so the relations between them still hold.
+            const std::vector<std::string> across = gross_others(report, id);
+            const double turn = geometry::wrap_angle(to.theta - poses[i].theta);
+            const double c = std::cos(turn), s = std::sin(turn);
+            std::vector<geometry::Pose2> ps = p;
+            GroupMove side{{object, to}};
+            for (const int f : partners(scene, object)) {
+              const geometry::Object& of = scene.objects[static_cast<std::size_t>(f)];
+              if (!movable[static_cast<std::size_t>(f)] ||
+                  std::find(across.begin(), across.end(), of.id) != across.end())
+                continue;
+              const geometry::Pose2& was = poses[static_cast<std::size_t>(f)];
+              const double dx = was.x - poses[i].x, dy = was.y - poses[i].y;
+              const geometry::Pose2 at{to.x + c * dx - s * dy, to.y + s * dx + c * dy,
+                                       geometry::wrap_angle(was.theta + turn)};
+              ps[static_cast<std::size_t>(f)] = at;
+              side.push_back({f, at});
+            }
+            if (side.size() == 1 || gross(check_preferences(scene, model, ps)) >= gross(report))
+              continue;
+            base = std::move(side);
+            p = std::move(ps);
+          } else {
+            p[static_cast<std::size_t>(base[1].first)] = base[1].second;
+          }
         }
         const auto fits = [&](const std::vector<geometry::Pose2>& q) {
           return std::all_of(base.begin(), base.end(),
@@ -477,6 +530,147 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         turns.push_back({c, std::move(next), std::move(placed)});
       }
       if (try_best(turns, kTurnTries, false)) ++out.turned;
+    }
+  }
+  // Angles still grossly off after the local moves above: whole
+  // rearrangements, found by a search over the preferences alone (no
+  // planning), then planned. A bed that holds the only wall a desk can
+  // share with its wardrobe moves to another wall, and the dresser that
+  // stands by the bed follows it: moves that raise the score only together.
+  // Each chain (a fixed seed per chain, so one output whatever the thread
+  // count) is a Metropolis walk over valid layouts; a step takes one object
+  // with an unmet preference (or, one step in four, any movable object) to
+  // one of its preferred poses or wall places, moving the one or two
+  // movable objects that hold the place to places of their own. Its energy
+  // is the score's negative, once more per gross miss, plus what the moved
+  // objects travel and how many stand in the kept tours' corridor: the
+  // tours are likelier kept near the layout that found them. Each chain's
+  // best layout with fewer gross misses and a score no lower is planned,
+  // best first, and kept at any cost when every tour is still found.
+  if (gross(report) > 0 && !(stop && stop->load())) {
+    const auto& fits = hooks.fits ? hooks.fits : hooks.valid;
+    std::vector<int> free_objects;
+    for (std::size_t i = 0; i < poses.size(); ++i)
+      if (movable[i]) free_objects.push_back(static_cast<int>(i));
+    // What object k at `a` adds to the energy (zero where it was).
+    const auto moved_cost = [&](int k, const geometry::Pose2& a) {
+      const geometry::Pose2& b = poses[static_cast<std::size_t>(k)];
+      if (a == b) return 0.0;
+      return kRearrangeMetre * std::hypot(a.x - b.x, a.y - b.y) +
+             (clear(k, a) ? 0.0 : kRearrangeInCorridor);
+    };
+    // Each object's wall places (the set does not depend on the layout).
+    std::vector<std::optional<std::vector<geometry::Pose2>>> slides(poses.size());
+    const auto places = [&](const std::vector<geometry::Pose2>& at, int k) {
+      std::vector<geometry::Pose2> list = preferred_poses(scene, model, at, k);
+      auto& w = slides[static_cast<std::size_t>(k)];
+      if (!w) w = wall_slides(scene, model, poses, k, kSlideStep);
+      list.insert(list.end(), w->begin(), w->end());
+      return list;
+    };
+    const int steps = std::min(kRearrangeMaxSteps,
+                               kRearrangeStepsPerObject * static_cast<int>(free_objects.size()));
+    struct Found {
+      double energy;
+      PreferenceReport report;
+      GroupMove move;
+    };
+    std::vector<Found> found;
+    for (int chain = 0; chain < kRearrangeChains && !free_objects.empty(); ++chain) {
+      std::mt19937_64 rng(splitmix64(hooks.seed ^ splitmix64(static_cast<std::uint64_t>(chain))));
+      std::vector<geometry::Pose2> q = poses;
+      PreferenceReport rq = report;
+      std::vector<double> moved(poses.size(), 0.0);  // moved_cost per object in q
+      double travel = 0.0;                           // their sum
+      double eq = -score(rq) + gross(rq);
+      std::optional<Found> best;
+      for (int step = 0; step < steps && !(stop && stop->load()); ++step) {
+        const double t =
+            kRearrangeHot * std::pow(kRearrangeCold / kRearrangeHot,
+                                     static_cast<double>(step) / std::max(1, steps - 1));
+        // The object: one with an unmet preference, or one step in four any.
+        std::vector<int> pool;
+        if (uniform01(rng) >= 0.25)
+          for (const PreferenceCheck& c : rq.checks) {
+            if (c.met) continue;
+            for (const std::string& who : {c.object, c.other}) {
+              const int k = who.empty() ? -1 : scene.find_object(who);
+              if (k >= 0 && movable[static_cast<std::size_t>(k)] &&
+                  std::find(pool.begin(), pool.end(), k) == pool.end())
+                pool.push_back(k);
+            }
+          }
+        if (pool.empty()) pool = free_objects;
+        const int o = pool[uniform_index(rng, pool.size())];
+        // Its places: preferred poses and wall places (slides).
+        const std::vector<geometry::Pose2> mine = places(q, o);
+        if (mine.empty()) continue;
+        std::vector<geometry::Pose2> next = q;
+        next[static_cast<std::size_t>(o)] = mine[uniform_index(rng, mine.size())];
+        if (!fits(next, o)) {
+          const std::vector<int> held = holders(scene, next, o);
+          if (held.empty() || held.size() > 2 ||
+              std::any_of(held.begin(), held.end(),
+                          [&](int j) { return !movable[static_cast<std::size_t>(j)]; }))
+            continue;
+          bool placed = true;
+          for (const int j : held) {
+            std::vector<geometry::Pose2> theirs = places(next, j);
+            theirs.push_back(q[static_cast<std::size_t>(o)]);
+            bool ok = false;
+            for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
+              next[static_cast<std::size_t>(j)] = theirs[uniform_index(rng, theirs.size())];
+              ok = fits(next, j);
+            }
+            if (!ok) {
+              placed = false;
+              break;
+            }
+          }
+          if (!placed || !fits(next, o)) continue;
+        }
+        PreferenceReport rn = check_preferences(scene, model, next);
+        std::vector<std::pair<int, double>> changed;
+        double travel_next = travel;
+        for (const int k : free_objects)
+          if (next[static_cast<std::size_t>(k)] != q[static_cast<std::size_t>(k)]) {
+            const double c = moved_cost(k, next[static_cast<std::size_t>(k)]);
+            travel_next += c - moved[static_cast<std::size_t>(k)];
+            changed.push_back({k, c});
+          }
+        const double en = -score(rn) + gross(rn) + travel_next;
+        if (en > eq && uniform01(rng) >= std::exp((eq - en) / t)) continue;
+        // The full checks (no stop left without a free goal pose: the
+        // escape rule) only on what is accepted.
+        if (!std::all_of(changed.begin(), changed.end(),
+                         [&](const auto& m) { return hooks.valid(next, m.first); }))
+          continue;
+        for (const auto& [k, c] : changed) moved[static_cast<std::size_t>(k)] = c;
+        q = std::move(next), rq = std::move(rn), eq = en, travel = travel_next;
+        if (gross(rq) < gross(report) && score(rq) >= score(report) &&
+            (!best || eq < best->energy)) {
+          GroupMove move;
+          for (const int k : free_objects)
+            if (q[static_cast<std::size_t>(k)] != poses[static_cast<std::size_t>(k)])
+              move.push_back({k, q[static_cast<std::size_t>(k)]});
+          best = Found{eq, rq, std::move(move)};
+        }
+      }
+      if (best && std::none_of(found.begin(), found.end(),
+                               [&](const Found& f) { return f.move == best->move; }))
+        found.push_back(std::move(*best));
+    }
+    std::stable_sort(found.begin(), found.end(),
+                     [](const Found& a, const Found& b) { return a.energy < b.energy; });
+    // Its own allowance of plannings (one per chain), beyond `max_tries`:
+    // the local moves above may have spent theirs.
+    for (Found& f : found) {
+      if (stop && stop->load()) break;
+      ++out.tried;
+      if (try_moves(f.move, f.report)) {
+        ++out.kept, ++out.rearranged;
+        break;
+      }
     }
   }
   // Square to the room: an object whose heading no preference fixes is

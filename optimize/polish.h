@@ -27,13 +27,24 @@
 // heading, and is also tried at its next places there; a turned member that
 // no longer fits is nudged up to 30 cm), the best two placements planned, on
 // the same conditions.
+// When an angle is still more than 20° off, a rearrangement: chains of a
+// search over the preferences alone (no planning; Metropolis steps that
+// take an object with an unmet preference to one of its preferred poses or
+// wall places, moving the one or two movable objects that hold the place
+// to places of their own) look for a valid layout with fewer such misses
+// and a score no lower, near the kept one and clear of its tours'
+// corridor; each chain's best is planned (its own allowance, one planning
+// per chain, beyond `max_tries`) and the first that keeps every tour is
+// kept at any cost. An eviction can also take the object's other relation
+// partners along, moved rigidly with it.
 // Last, each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered).
 // The order is fixed (objects ascending, candidates in preferred_poses
-// order), so the result is a function of the layout and the planner's
-// seeds, whatever the thread count.
+// order) and the chains are seeded (PolishHooks::seed), so the result is a
+// function of the layout and the seeds, whatever the thread count.
 
 #include <atomic>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -47,6 +58,10 @@ namespace hrs::optimize {
 struct PolishHooks {
   //! Exact validity of `poses` after moving object `moved`.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
+  //! The geometric part of `valid` alone (inside, no overlap, door clear),
+  //! cheaper; the rearrangement's search uses it, and `valid` on what it
+  //! plans. Unset: `valid`.
+  std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> fits;
   //! Moves object `object` to `to` (C-space included).
   std::function<void(int object, const geometry::Pose2& to)> place;
   //! Plans the tours of the layout `poses` (placed) and returns its terms.
@@ -56,6 +71,8 @@ struct PolishHooks {
   //! The tours of the layout kept last (may be unset): the places along the
   //! walls that stay clear of their corridor are tried first.
   std::function<const std::vector<planning::Tour>&()> tours;
+  //! Seeds the rearrangement's chains (one output for a seed).
+  std::uint64_t seed = 0;
 };
 
 struct PolishResult {
@@ -65,11 +82,13 @@ struct PolishResult {
   int swapped = 0;  //!< of `kept`, exchanges of two objects' places
   int evicted = 0;  //!< of `kept`, a held place freed by moving its holder
   int turned = 0;   //!< heading groups turned as one body (group_turns)
+  int rearranged = 0;  //!< of `kept`, rearrangements found over the preferences alone
   int squared = 0;  //!< objects turned square to their wall (no heading preference)
 };
 
 //! Polishes `poses` (the best layout, whose terms are `terms`) in place;
-//! at most `max_tries` plannings; `stop` (may be null) ends it early.
+//! at most `max_tries` plannings and the rearrangement's own (one per
+//! chain, four); `stop` (may be null) ends it early.
 PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::vector<bool>& movable, std::vector<geometry::Pose2>& poses,
                     CostTerms& terms, const PolishHooks& hooks, int max_tries,
