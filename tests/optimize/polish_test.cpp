@@ -40,6 +40,13 @@ std::vector<Pose2> poses_of(const geometry::Scene& scene) {
   return out;
 }
 
+//! The layout violation of `scene` with its objects at `poses` ("" when
+//! valid).
+std::string violation_at(geometry::Scene scene, const std::vector<Pose2>& poses) {
+  for (std::size_t i = 0; i < poses.size(); ++i) scene.objects[i].pose = poses[i];
+  return layout_violation(scene);
+}
+
 //! The polish's score (optimize/polish.cpp): preferences met, less one per
 //! angle preference more than 20° off; recomputed here from the report.
 int polish_gross(const PreferenceReport& r) {
@@ -128,8 +135,7 @@ TEST(Polish, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
       EXPECT_EQ(planned, r.tried) << what;
       EXPECT_LE(r.tried, cap + 4) << what;  // the rearrangement's own four
       geometry::Scene out = work;
-      for (std::size_t i = 0; i < poses.size(); ++i) out.objects[i].pose = poses[i];
-      EXPECT_EQ(layout_violation(out), "") << what;
+      EXPECT_EQ(violation_at(out, poses), "") << what;
       kept += r.kept;
       slid += r.slid;
       swapped += r.swapped;
@@ -333,8 +339,7 @@ TEST(Polish, TurnsInPlaceWhereNoSpotAtItsWallIsFree) {
   const PreferenceReport after = check_preferences(scene, model, poses);
   EXPECT_EQ(after.met, 1);
   EXPECT_NEAR(after.worst_angle, 0.0, 1e-9);
-  for (std::size_t i = 0; i < poses.size(); ++i) scratch.objects[i].pose = poses[i];
-  EXPECT_EQ(layout_violation(scratch), "");
+  EXPECT_EQ(violation_at(scratch, poses), "");
 }
 
 
@@ -359,8 +364,7 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
   EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
   EXPECT_NEAR(geometry::norm(poses[2].position() - Vec2{1.0, 3.5}), 0.0, 1e-9);
   EXPECT_NEAR(geometry::norm(poses[1].position() - Vec2{4.5, 2.0}), 0.0, 1e-9);
-  for (std::size_t i = 0; i < poses.size(); ++i) scratch.objects[i].pose = poses[i];
-  EXPECT_EQ(layout_violation(scratch), "");
+  EXPECT_EQ(violation_at(scratch, poses), "");
 }
 
 // The same room, but the planner stands in for one whose tours through the
@@ -457,8 +461,7 @@ TEST(Polish, EvictsTheHolderOfThePlaceThatMendsAGrossAngleMiss) {
   EXPECT_GE(poses[0].x, 0.5 + 0.7 - 1e-9);
   EXPECT_LE(poses[0].x, 2.2 - 0.7 + 1e-9);
   EXPECT_NEAR(geometry::norm(poses[1].position() - Vec2{2.5, 2.0}), 0.0, 1e-9);
-  for (std::size_t i = 0; i < poses.size(); ++i) scratch.objects[i].pose = poses[i];
-  EXPECT_EQ(layout_violation(scratch), "");
+  EXPECT_EQ(violation_at(scratch, poses), "");
 }
 
 // The same room with a planner whose tours through the moved bed and box
@@ -558,8 +561,7 @@ TEST(Polish, EvictionTakesTheObjectsSideOfItsRelationsAlong) {
                 1e-9)
         << k;
   }
-  for (std::size_t i = 0; i < poses.size(); ++i) scratch.objects[i].pose = poses[i];
-  EXPECT_EQ(layout_violation(scratch), "");
+  EXPECT_EQ(violation_at(scratch, poses), "");
 }
 
 // A desk on the top wall must share the fixed wardrobe's heading (relation
@@ -640,8 +642,7 @@ TEST(Polish, RearrangesSeveralObjectsWhenNoSingleMoveMendsAGrossAngleMiss) {
     EXPECT_GE(polish_score(after), polish_score(before)) << what;
     EXPECT_NEAR(geometry::wrap_angle(p[3].theta - std::numbers::pi / 2), 0.0, 1e-9) << what;
     EXPECT_NEAR(p[3].y, 0.3, 1e-9) << what;
-    for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-    EXPECT_EQ(layout_violation(scratch), "") << what;
+    EXPECT_EQ(violation_at(scratch, p), "") << what;
   }
   std::printf("rearranged with %d of 10 seeds\n", rearranged);
   EXPECT_GE(rearranged, 9);  // 9 when this test was written
