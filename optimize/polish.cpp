@@ -13,6 +13,7 @@
 #include "geometry/random.h"
 #include "optimize/arrange.h"
 #include "optimize/preferences.h"
+#include "optimize/rearrange.h"
 
 namespace hrs::optimize {
 
@@ -44,21 +45,6 @@ bool heading_fixed(const geometry::Scene& scene, int object) {
   return false;
 }
 
-//! A heading this far off its preference (radians, 20°) is a gross miss:
-//! a bed turned sideways, a TV facing away.
-constexpr double kGrossAngle = 20.0 * std::numbers::pi / 180.0;
-
-//! What the polish increases: preferences met, less one for every angle
-//! preference grossly missed. A layout that meets an angle at the price of
-//! a distance is better (a designer sees a wrong heading at a glance); one
-//! that meets a distance at the price of a gross angle is not.
-int gross(const PreferenceReport& r) {
-  int n = 0;
-  for (const PreferenceCheck& c : r.checks) n += c.angular() && c.residual > kGrossAngle;
-  return n;
-}
-int score(const PreferenceReport& r) { return r.met - gross(r); }
-
 //! The objects at the other end of `id`'s grossly missed angle preferences.
 std::vector<std::string> gross_others(const PreferenceReport& r, const std::string& id) {
   std::vector<std::string> out;
@@ -77,24 +63,6 @@ bool grossly_off(const PreferenceReport& r, const std::string& id) {
   });
 }
 
-//! The other objects whose footprints `object`'s overlaps at `poses`
-//! (beyond contact), ascending; at most three are listed.
-std::vector<int> holders(const geometry::Scene& scene, const std::vector<geometry::Pose2>& poses,
-                         int object) {
-  geometry::Object o = scene.objects[static_cast<std::size_t>(object)];
-  o.pose = poses[static_cast<std::size_t>(object)];
-  const geometry::Polygon f = geometry::world_footprint(o);
-  std::vector<int> found;
-  for (std::size_t j = 0; j < poses.size() && found.size() < 3; ++j) {
-    if (static_cast<int>(j) == object) continue;
-    geometry::Object other = scene.objects[j];
-    other.pose = poses[j];
-    if (geometry::overlap_beyond_contact(f, geometry::world_footprint(other)))
-      found.push_back(static_cast<int>(j));
-  }
-  return found;
-}
-
 //! Spacing of the places tried along each wall, metres, and how many of
 //! the best are planned per object.
 constexpr double kSlideStep = 0.2;
@@ -107,19 +75,6 @@ constexpr std::size_t kSwapTries = 2;
 //! many of the best evictions of their holders are planned.
 constexpr int kEvictPlaces = 16;
 constexpr std::size_t kEvictTries = 4;
-
-//! The rearrangement (a search over the preferences alone, no planning):
-//! chains run and planned, Metropolis steps per movable object (at most
-//! kRearrangeMaxSteps a chain), the temperature's start and end (in units
-//! of the score), what a metre moved costs, and what a moved object in the
-//! kept tours' corridor costs.
-constexpr int kRearrangeChains = 4;
-constexpr int kRearrangeStepsPerObject = 400;
-constexpr int kRearrangeMaxSteps = 2000;
-constexpr double kRearrangeHot = 1.0;
-constexpr double kRearrangeCold = 0.1;
-constexpr double kRearrangeMetre = 0.05;
-constexpr double kRearrangeInCorridor = 0.5;
 
 //! Places along the walls tried per wall object of a group turn, and how
 //! many of a turn's best placements are planned.
@@ -268,12 +223,12 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) {
                        if (a.clear != b.clear) return a.clear;
-                       return score(a.report) > score(b.report);
+                       return polish_score(a.report) > polish_score(b.report);
                      });
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
       if (out.tried >= max_tries || (stop && stop->load())) break;
       ++out.tried;
-      const bool capped = no_costlier && gross(candidates[k].report) >= gross(report);
+      const bool capped = no_costlier && gross_misses(candidates[k].report) >= gross_misses(report);
       if (try_moves(candidates[k].move, candidates[k].report, capped)) return true;
     }
     return false;
@@ -284,10 +239,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     for (std::size_t i = 0; i < poses.size(); ++i) {
       if (!movable[i] || out.tried >= max_tries || (stop && stop->load())) continue;
       const std::string& id = scene.objects[i].id;
-      const bool unmet = std::any_of(report.checks.begin(), report.checks.end(),
-                                     [&](const PreferenceCheck& c) {
-                                       return !c.met && (c.object == id || c.other == id);
-                                     });
+      const bool unmet = std::any_of(
+          report.checks.begin(), report.checks.end(),
+          [&](const PreferenceCheck& c) { return !c.met && (c.object == id || c.other == id); });
       if (!unmet) continue;
       const int object = static_cast<int>(i);
       bool kept = false;
@@ -311,7 +265,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         // preferred poses (a bed turned round with the TV that faces it).
         std::vector<std::pair<int, geometry::Pose2>> moves{{object, to}};
         PreferenceReport best = next;
-        if (score(next) <= score(report)) {
+        if (polish_score(next) <= polish_score(report)) {
           for (const int j : partners(scene, object)) {
             if (!movable[static_cast<std::size_t>(j)]) continue;
             for (const geometry::Pose2& to_j : preferred_poses(scene, model, p, j)) {
@@ -319,14 +273,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
               q[static_cast<std::size_t>(j)] = to_j;
               if (!hooks.valid(q, j)) continue;
               PreferenceReport both = check_preferences(scene, model, q);
-              if (score(both) > score(best)) {
+              if (polish_score(both) > polish_score(best)) {
                 best = std::move(both);
                 moves = {{object, to}, {j, to_j}};
               }
             }
           }
         }
-        if (score(best) <= score(report)) continue;
+        if (polish_score(best) <= polish_score(report)) continue;
         ++out.tried;
         if (try_moves(moves, best)) {
           ++out.kept;
@@ -342,7 +296,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         p[i] = to;
         if (!hooks.valid(p, object)) continue;
         PreferenceReport next = check_preferences(scene, model, p);
-        if (score(next) > score(report))
+        if (polish_score(next) > polish_score(report))
           slides.push_back({clear(object, to), std::move(next), {{object, to}}});
       }
       if (try_best(slides, kSlideTries, false)) {
@@ -364,7 +318,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           settle(q, move);
           if (!hooks.valid(q, object) || !hooks.valid(q, static_cast<int>(j))) continue;
           PreferenceReport next = check_preferences(scene, model, q);
-          if (score(next) <= score(report)) continue;
+          if (polish_score(next) <= polish_score(report)) continue;
           const bool c = clear(object, move[0].second) && clear(move[1].first, move[1].second);
           exchanges.push_back({c, std::move(next), std::move(move)});
         }
@@ -399,13 +353,13 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         // at the first of its preferred poses that mends the miss with it
         // (a desk moved to another wall with the chair that faces it).
         GroupMove base{{object, to}};
-        if (gross(check_preferences(scene, model, p)) >= gross(report)) {
+        if (gross_misses(check_preferences(scene, model, p)) >= gross_misses(report)) {
           for (const int f : partners(scene, object)) {
             if (!movable[static_cast<std::size_t>(f)] || base.size() > 1) continue;
             for (const geometry::Pose2& at : preferred_poses(scene, model, p, f)) {
               std::vector<geometry::Pose2> pf = p;
               pf[static_cast<std::size_t>(f)] = at;
-              if (gross(check_preferences(scene, model, pf)) < gross(report)) {
+              if (gross_misses(check_preferences(scene, model, pf)) < gross_misses(report)) {
                 base.push_back({f, at});
                 break;
               }
@@ -433,7 +387,8 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
               ps[static_cast<std::size_t>(f)] = at;
               side.push_back({f, at});
             }
-            if (side.size() == 1 || gross(check_preferences(scene, model, ps)) >= gross(report))
+            if (side.size() == 1 ||
+                gross_misses(check_preferences(scene, model, ps)) >= gross_misses(report))
               continue;
             base = std::move(side);
             p = std::move(ps);
@@ -452,7 +407,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         if (hooks.valid(p, object)) {
           if (!fits(p)) continue;
           PreferenceReport next = check_preferences(scene, model, p);
-          if (score(next) >= score(report))
+          if (polish_score(next) >= polish_score(report))
             evictions.push_back({clear_all(base), std::move(next), base});
           continue;
         }
@@ -499,7 +454,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           }
           if (!fits(q)) continue;
           PreferenceReport next = check_preferences(scene, model, q);
-          if (score(next) < score(report) || gross(next) >= gross(report)) continue;
+          if (polish_score(next) < polish_score(report) ||
+              gross_misses(next) >= gross_misses(report))
+            continue;
           evictions.push_back({clear_all(move), std::move(next), std::move(move)});
         }
       }
@@ -524,7 +481,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         std::vector<geometry::Pose2> q = poses;
         for (const auto& [k, pose] : placed) q[static_cast<std::size_t>(k)] = pose;
         PreferenceReport next = check_preferences(scene, model, q);
-        if (score(next) <= score(report)) continue;
+        if (polish_score(next) <= polish_score(report)) continue;
         const bool c = std::all_of(placed.begin(), placed.end(),
                                    [&](const auto& m) { return clear(m.first, m.second); });
         turns.push_back({c, std::move(next), std::move(placed)});
@@ -547,126 +504,18 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // tours are likelier kept near the layout that found them. Each chain's
   // best layout with fewer gross misses and a score no lower is planned,
   // best first, and kept at any cost when every tour is still found.
-  if (gross(report) > 0 && !(stop && stop->load())) {
-    const auto& fits = hooks.fits ? hooks.fits : hooks.valid;
-    std::vector<int> free_objects;
-    for (std::size_t i = 0; i < poses.size(); ++i)
-      if (movable[i]) free_objects.push_back(static_cast<int>(i));
-    // What object k at `a` adds to the energy (zero where it was).
-    const auto moved_cost = [&](int k, const geometry::Pose2& a) {
-      const geometry::Pose2& b = poses[static_cast<std::size_t>(k)];
-      if (a == b) return 0.0;
-      return kRearrangeMetre * std::hypot(a.x - b.x, a.y - b.y) +
-             (clear(k, a) ? 0.0 : kRearrangeInCorridor);
-    };
-    // Each object's wall places (the set does not depend on the layout).
-    std::vector<std::optional<std::vector<geometry::Pose2>>> slides(poses.size());
-    const auto places = [&](const std::vector<geometry::Pose2>& at, int k) {
-      std::vector<geometry::Pose2> list = preferred_poses(scene, model, at, k);
-      auto& w = slides[static_cast<std::size_t>(k)];
-      if (!w) w = wall_slides(scene, model, poses, k, kSlideStep);
-      list.insert(list.end(), w->begin(), w->end());
-      return list;
-    };
-    const int steps = std::min(kRearrangeMaxSteps,
-                               kRearrangeStepsPerObject * static_cast<int>(free_objects.size()));
-    struct Found {
-      double energy;
-      PreferenceReport report;
-      GroupMove move;
-    };
-    std::vector<Found> found;
-    for (int chain = 0; chain < kRearrangeChains && !free_objects.empty(); ++chain) {
-      std::mt19937_64 rng(splitmix64(hooks.seed ^ splitmix64(static_cast<std::uint64_t>(chain))));
-      std::vector<geometry::Pose2> q = poses;
-      PreferenceReport rq = report;
-      std::vector<double> moved(poses.size(), 0.0);  // moved_cost per object in q
-      double travel = 0.0;                           // their sum
-      double eq = -score(rq) + gross(rq);
-      std::optional<Found> best;
-      for (int step = 0; step < steps && !(stop && stop->load()); ++step) {
-        const double t =
-            kRearrangeHot * std::pow(kRearrangeCold / kRearrangeHot,
-                                     static_cast<double>(step) / std::max(1, steps - 1));
-        // The object: one with an unmet preference, or one step in four any.
-        std::vector<int> pool;
-        if (uniform01(rng) >= 0.25)
-          for (const PreferenceCheck& c : rq.checks) {
-            if (c.met) continue;
-            for (const std::string& who : {c.object, c.other}) {
-              const int k = who.empty() ? -1 : scene.find_object(who);
-              if (k >= 0 && movable[static_cast<std::size_t>(k)] &&
-                  std::find(pool.begin(), pool.end(), k) == pool.end())
-                pool.push_back(k);
-            }
-          }
-        if (pool.empty()) pool = free_objects;
-        const int o = pool[uniform_index(rng, pool.size())];
-        // Its places: preferred poses and wall places (slides).
-        const std::vector<geometry::Pose2> mine = places(q, o);
-        if (mine.empty()) continue;
-        std::vector<geometry::Pose2> next = q;
-        next[static_cast<std::size_t>(o)] = mine[uniform_index(rng, mine.size())];
-        if (!fits(next, o)) {
-          const std::vector<int> held = holders(scene, next, o);
-          if (held.empty() || held.size() > 2 ||
-              std::any_of(held.begin(), held.end(),
-                          [&](int j) { return !movable[static_cast<std::size_t>(j)]; }))
-            continue;
-          bool placed = true;
-          for (const int j : held) {
-            std::vector<geometry::Pose2> theirs = places(next, j);
-            theirs.push_back(q[static_cast<std::size_t>(o)]);
-            bool ok = false;
-            for (int attempt = 0; attempt < 8 && !ok; ++attempt) {
-              next[static_cast<std::size_t>(j)] = theirs[uniform_index(rng, theirs.size())];
-              ok = fits(next, j);
-            }
-            if (!ok) {
-              placed = false;
-              break;
-            }
-          }
-          if (!placed || !fits(next, o)) continue;
-        }
-        PreferenceReport rn = check_preferences(scene, model, next);
-        std::vector<std::pair<int, double>> changed;
-        double travel_next = travel;
-        for (const int k : free_objects)
-          if (next[static_cast<std::size_t>(k)] != q[static_cast<std::size_t>(k)]) {
-            const double c = moved_cost(k, next[static_cast<std::size_t>(k)]);
-            travel_next += c - moved[static_cast<std::size_t>(k)];
-            changed.push_back({k, c});
-          }
-        const double en = -score(rn) + gross(rn) + travel_next;
-        if (en > eq && uniform01(rng) >= std::exp((eq - en) / t)) continue;
-        // The full checks (no stop left without a free goal pose: the
-        // escape rule) only on what is accepted.
-        if (!std::all_of(changed.begin(), changed.end(),
-                         [&](const auto& m) { return hooks.valid(next, m.first); }))
-          continue;
-        for (const auto& [k, c] : changed) moved[static_cast<std::size_t>(k)] = c;
-        q = std::move(next), rq = std::move(rn), eq = en, travel = travel_next;
-        if (gross(rq) < gross(report) && score(rq) >= score(report) &&
-            (!best || eq < best->energy)) {
-          GroupMove move;
-          for (const int k : free_objects)
-            if (q[static_cast<std::size_t>(k)] != poses[static_cast<std::size_t>(k)])
-              move.push_back({k, q[static_cast<std::size_t>(k)]});
-          best = Found{eq, rq, std::move(move)};
-        }
-      }
-      if (best && std::none_of(found.begin(), found.end(),
-                               [&](const Found& f) { return f.move == best->move; }))
-        found.push_back(std::move(*best));
-    }
-    std::stable_sort(found.begin(), found.end(),
-                     [](const Found& a, const Found& b) { return a.energy < b.energy; });
+  int rearrange_tries = 0;
+  if (gross_misses(report) > 0 && !(stop && stop->load())) {
+    RearrangeHooks rh;
+    rh.fits = hooks.fits ? hooks.fits : hooks.valid;
+    rh.valid = hooks.valid;
+    rh.clear = clear;
+    rh.seed = hooks.seed;
     // Its own allowance of plannings (one per chain), beyond `max_tries`:
     // the local moves above may have spent theirs.
-    for (Found& f : found) {
+    for (Rearrangement& f : rearrangements(scene, model, movable, poses, report, rh, stop)) {
       if (stop && stop->load()) break;
-      ++out.tried;
+      ++out.tried, ++rearrange_tries;
       if (try_moves(f.move, f.report)) {
         ++out.kept, ++out.rearranged;
         break;
@@ -681,7 +530,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // it left a side table at 7° in a shipped living room).
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const int object = static_cast<int>(i);
-    if (!movable[i] || heading_fixed(scene, object) || out.tried >= max_tries ||
+    if (!movable[i] || heading_fixed(scene, object) || out.tried - rearrange_tries >= max_tries ||
         (stop && stop->load()))
       continue;
     const double normal = model.wall_normal_angle(model.nearest_wall(object, poses[i]));
@@ -692,7 +541,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     p[i].theta = geometry::wrap_angle(normal + square);
     if (!hooks.valid(p, object)) continue;
     PreferenceReport next = check_preferences(scene, model, p);
-    if (score(next) < score(report)) continue;
+    if (polish_score(next) < polish_score(report)) continue;
     ++out.tried;
     if (try_moves({{object, p[i]}}, next)) ++out.squared;
   }

@@ -27,15 +27,16 @@
 // heading, and is also tried at its next places there; a turned member that
 // no longer fits is nudged up to 30 cm), the best two placements planned, on
 // the same conditions.
-// When an angle is still more than 20° off, a rearrangement: chains of a
+// When an angle is still more than 20° off, a rearrangement
+// (optimize/rearrange.h): chains of a
 // search over the preferences alone (no planning; Metropolis steps that
 // take an object with an unmet preference to one of its preferred poses or
 // wall places, moving the one or two movable objects that hold the place
 // to places of their own) look for a valid layout with fewer such misses
 // and a score no lower, near the kept one and clear of its tours'
 // corridor; each chain's best is planned (its own allowance, one planning
-// per chain, beyond `max_tries`) and the first that keeps every tour is
-// kept at any cost. An eviction can also take the object's other relation
+// per chain, not counted against `max_tries`) and the first that keeps
+// every tour is kept at any cost. An eviction can also take the object's other relation
 // partners along, moved rigidly with it.
 // Last, each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered).
@@ -88,7 +89,7 @@ struct PolishResult {
 
 //! Polishes `poses` (the best layout, whose terms are `terms`) in place;
 //! at most `max_tries` plannings and the rearrangement's own (one per
-//! chain, four); `stop` (may be null) ends it early.
+//! chain, eight); `stop` (may be null) ends it early.
 PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::vector<bool>& movable, std::vector<geometry::Pose2>& poses,
                     CostTerms& terms, const PolishHooks& hooks, int max_tries,

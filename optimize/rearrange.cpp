@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Rearrangements over the preferences alone; see rearrange.h.
+
+#include "optimize/rearrange.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <random>
+#include <string>
+
+#include "geometry/polygon_ops.h"
+#include "geometry/random.h"
+
+namespace hrs::optimize {
+
+namespace {
+
+//! Chains run, Metropolis steps per movable object (at most kMaxSteps a
+//! chain), the temperature's start and end (in units of the score), what a
+//! metre moved costs, and what a moved object in the kept tours' corridor
+//! costs.
+constexpr int kChains = 8;
+constexpr int kStepsPerObject = 400;
+constexpr int kMaxSteps = 2000;
+constexpr double kHot = 1.0;
+constexpr double kCold = 0.1;
+constexpr double kMetre = 0.05;
+constexpr double kInCorridor = 0.5;
+
+//! The share of steps whose object is drawn among all movable objects,
+//! not only those with an unmet preference.
+constexpr double kAnyObject = 0.25;
+
+//! Draws a holder makes for a place of its own before the step is dropped.
+constexpr int kHolderDraws = 8;
+
+//! Spacing of the wall places, metres (as the polish's slides).
+constexpr double kSlideStep = 0.2;
+
+}  // namespace
+
+int gross_misses(const PreferenceReport& r) {
+  int n = 0;
+  for (const PreferenceCheck& c : r.checks) n += c.angular() && c.residual > kGrossAngle;
+  return n;
+}
+
+int polish_score(const PreferenceReport& r) { return r.met - gross_misses(r); }
+
+std::vector<int> holders(const geometry::Scene& scene, const std::vector<geometry::Pose2>& poses,
+                         int object) {
+  geometry::Object o = scene.objects[static_cast<std::size_t>(object)];
+  o.pose = poses[static_cast<std::size_t>(object)];
+  const geometry::Polygon f = geometry::world_footprint(o);
+  std::vector<int> found;
+  for (std::size_t j = 0; j < poses.size() && found.size() < 3; ++j) {
+    if (static_cast<int>(j) == object) continue;
+    geometry::Object other = scene.objects[j];
+    other.pose = poses[j];
+    if (geometry::overlap_beyond_contact(f, geometry::world_footprint(other)))
+      found.push_back(static_cast<int>(j));
+  }
+  return found;
+}
+
+std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const CostModel& model,
+                                          const std::vector<bool>& movable,
+                                          const std::vector<geometry::Pose2>& poses,
+                                          const PreferenceReport& report,
+                                          const RearrangeHooks& hooks,
+                                          const std::atomic<bool>* stop) {
+  std::vector<Rearrangement> found;
+  const int gross0 = gross_misses(report), score0 = polish_score(report);
+  if (gross0 == 0) return found;
+  std::vector<int> free_objects;
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    if (movable[i]) free_objects.push_back(static_cast<int>(i));
+  if (free_objects.empty()) return found;
+  // What object k at `a` adds to the energy (zero where it was).
+  const auto moved_cost = [&](int k, const geometry::Pose2& a) {
+    const geometry::Pose2& b = poses[static_cast<std::size_t>(k)];
+    if (a == b) return 0.0;
+    return kMetre * std::hypot(a.x - b.x, a.y - b.y) + (hooks.clear(k, a) ? 0.0 : kInCorridor);
+  };
+  // Each object's wall places, computed once from the layout searched from
+  // (an object with a wall distance and no wall angle keeps its heading
+  // there).
+  std::vector<std::optional<std::vector<geometry::Pose2>>> slides(poses.size());
+  const auto slides_of = [&](int k) -> const std::vector<geometry::Pose2>& {
+    auto& w = slides[static_cast<std::size_t>(k)];
+    if (!w) w = wall_slides(scene, model, poses, k, kSlideStep);
+    return *w;
+  };
+  // A place for object k: half the draws among its `preferred` poses, half
+  // among its wall places and `extra` (when given); nullopt when it has
+  // none.
+  const auto draw = [&](std::mt19937_64& rng, const std::vector<geometry::Pose2>& preferred, int k,
+                        const geometry::Pose2* extra) -> std::optional<geometry::Pose2> {
+    const std::vector<geometry::Pose2>& walls = slides_of(k);
+    const std::size_t others = walls.size() + (extra ? 1 : 0);
+    if (preferred.empty() && others == 0) return std::nullopt;
+    if (!preferred.empty() && (others == 0 || uniform01(rng) < 0.5))
+      return preferred[uniform_index(rng, preferred.size())];
+    const std::size_t i = uniform_index(rng, others);
+    return i < walls.size() ? walls[i] : *extra;
+  };
+  const int steps = std::min(kMaxSteps, kStepsPerObject * static_cast<int>(free_objects.size()));
+  for (int chain = 0; chain < kChains; ++chain) {
+    std::mt19937_64 rng(splitmix64(hooks.seed ^ splitmix64(static_cast<std::uint64_t>(chain))));
+    std::vector<geometry::Pose2> q = poses;
+    PreferenceReport rq = report;
+    std::vector<double> moved(poses.size(), 0.0);  // moved_cost per object in q
+    double travel = 0.0;                           // their sum
+    double eq = -polish_score(rq) + gross_misses(rq);
+    std::optional<Rearrangement> best;
+    for (int step = 0; step < steps && !(stop && stop->load()); ++step) {
+      const double t =
+          kHot * std::pow(kCold / kHot, static_cast<double>(step) / std::max(1, steps - 1));
+      // The object: one with an unmet preference, or (kAnyObject) any.
+      std::vector<int> pool;
+      if (uniform01(rng) >= kAnyObject)
+        for (const PreferenceCheck& c : rq.checks) {
+          if (c.met) continue;
+          for (const std::string& who : {c.object, c.other}) {
+            const int k = who.empty() ? -1 : scene.find_object(who);
+            if (k >= 0 && movable[static_cast<std::size_t>(k)] &&
+                std::find(pool.begin(), pool.end(), k) == pool.end())
+              pool.push_back(k);
+          }
+        }
+      if (pool.empty()) pool = free_objects;
+      const int o = pool[uniform_index(rng, pool.size())];
+      const std::optional<geometry::Pose2> to =
+          draw(rng, preferred_poses(scene, model, q, o), o, nullptr);
+      if (!to) continue;
+      std::vector<geometry::Pose2> next = q;
+      next[static_cast<std::size_t>(o)] = *to;
+      if (!hooks.fits(next, o)) {
+        // One or two movable holders of the place move to places of their
+        // own, or to the place the object leaves.
+        const std::vector<int> held = holders(scene, next, o);
+        if (held.empty() || held.size() > 2 || std::any_of(held.begin(), held.end(), [&](int j) {
+              return !movable[static_cast<std::size_t>(j)];
+            }))
+          continue;
+        bool placed = true;
+        for (const int j : held) {
+          const std::vector<geometry::Pose2> preferred = preferred_poses(scene, model, next, j);
+          bool ok = false;
+          for (int attempt = 0; attempt < kHolderDraws && !ok; ++attempt) {
+            const std::optional<geometry::Pose2> theirs =
+                draw(rng, preferred, j, &q[static_cast<std::size_t>(o)]);
+            next[static_cast<std::size_t>(j)] = *theirs;  // `extra` makes one exist
+            ok = hooks.fits(next, j);
+          }
+          if (!ok) {
+            placed = false;
+            break;
+          }
+        }
+        if (!placed || !hooks.fits(next, o)) continue;
+      }
+      PreferenceReport rn = check_preferences(scene, model, next);
+      std::vector<std::pair<int, double>> changed;
+      double travel_next = travel;
+      for (const int k : free_objects)
+        if (next[static_cast<std::size_t>(k)] != q[static_cast<std::size_t>(k)]) {
+          const double c = moved_cost(k, next[static_cast<std::size_t>(k)]);
+          travel_next += c - moved[static_cast<std::size_t>(k)];
+          changed.push_back({k, c});
+        }
+      const double en = -polish_score(rn) + gross_misses(rn) + travel_next;
+      if (en > eq && uniform01(rng) >= std::exp((eq - en) / t)) continue;
+      // The full checks only on what is accepted, once: every moved object
+      // already fits, and the stop check looks at all of them.
+      if (!changed.empty() && !hooks.valid(next, changed.front().first)) continue;
+      for (const auto& [k, c] : changed) moved[static_cast<std::size_t>(k)] = c;
+      q = std::move(next), rq = std::move(rn), eq = en, travel = travel_next;
+      if (gross_misses(rq) < gross0 && polish_score(rq) >= score0 && (!best || eq < best->energy)) {
+        GroupMove move;
+        for (const int k : free_objects)
+          if (q[static_cast<std::size_t>(k)] != poses[static_cast<std::size_t>(k)])
+            move.push_back({k, q[static_cast<std::size_t>(k)]});
+        best = Rearrangement{eq, rq, std::move(move)};
+      }
+    }
+    if (best && std::none_of(found.begin(), found.end(),
+                             [&](const Rearrangement& f) { return f.move == best->move; }))
+      found.push_back(std::move(*best));
+  }
+  std::stable_sort(found.begin(), found.end(), [](const Rearrangement& a, const Rearrangement& b) {
+    return a.energy < b.energy;
+  });
+  return found;
+}
+
+}  // namespace hrs::optimize
