@@ -20,6 +20,7 @@
 #include "optimize/design.h"
 #include "optimize/preferences.h"
 #include "optimize/sequences.h"
+#include "scramble.h"
 
 namespace hrs::optimize {
 namespace {
@@ -75,18 +76,7 @@ TEST(Polish, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
     model.set_bounded_preferences(true);
     const std::vector<bool> movable = movable_of(scene);
     for (std::uint64_t seed = 1; seed <= 100; ++seed) {
-      // Scramble: each movable object turned by a multiple of 90° and
-      // nudged, kept only where the layout stays valid.
-      geometry::Scene work = scene;
-      std::mt19937_64 rng(seed);
-      std::uniform_real_distribution<double> u(-0.3, 0.3);
-      for (std::size_t i = 0; i < work.objects.size(); ++i) {
-        if (!movable[i]) continue;
-        const Pose2 was = work.objects[i].pose;
-        work.objects[i].pose = {was.x + u(rng), was.y + u(rng),
-                                geometry::wrap_angle(was.theta + (rng() % 4) * std::numbers::pi / 2)};
-        if (!object_violation(work, static_cast<int>(i)).empty()) work.objects[i].pose = was;
-      }
+      const geometry::Scene work = testing::scrambled(scene, movable, seed);
       std::vector<Pose2> poses = poses_of(work);
       ASSERT_EQ(layout_violation(work), "") << file << " seed " << seed;
       std::vector<Pose2> placed = poses;  // what place() was told
