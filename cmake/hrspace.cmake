@@ -56,9 +56,10 @@ function(hrspace_ompl_target)
   endif()
 endfunction()
 
-# hrspace_add_test(name SOURCES ... LIBS ... [LABELS unit|slow ...] [OMPL])
+# hrspace_add_test(name SOURCES ... LIBS ... [ARGS ...] [LABELS unit|slow ...] [OMPL])
+# ARGS go to the test's command line (e.g. a --gtest_filter).
 function(hrspace_add_test name)
-  cmake_parse_arguments(T "OMPL" "" "SOURCES;LIBS;LABELS" ${ARGN})
+  cmake_parse_arguments(T "OMPL" "" "SOURCES;LIBS;ARGS;LABELS" ${ARGN})
   add_executable(${name} ${T_SOURCES})
   target_compile_options(${name} PRIVATE ${HRSPACE_WARNINGS})
   target_link_libraries(${name} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main)
@@ -71,7 +72,19 @@ function(hrspace_add_test name)
   if(NOT T_LABELS)
     set(T_LABELS unit)
   endif()
-  add_test(NAME ${name} COMMAND ${name})
+  add_test(NAME ${name} COMMAND ${name} ${T_ARGS})
+  set_tests_properties(${name} PROPERTIES LABELS "${T_LABELS}" TIMEOUT 1800)
+endfunction()
+
+# hrspace_add_test_run(name TARGET executable ARGS ... [LABELS unit|slow ...])
+# One more test of an executable that hrspace_add_test made, with its own
+# command line: one source split into fast and slow suites by gtest filters.
+function(hrspace_add_test_run name)
+  cmake_parse_arguments(T "" "TARGET" "ARGS;LABELS" ${ARGN})
+  if(NOT T_LABELS)
+    set(T_LABELS unit)
+  endif()
+  add_test(NAME ${name} COMMAND ${T_TARGET} ${T_ARGS})
   set_tests_properties(${name} PROPERTIES LABELS "${T_LABELS}" TIMEOUT 1800)
 endfunction()
 

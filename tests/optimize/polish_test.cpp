@@ -3,7 +3,8 @@
 // stand-in planner, kept moves raise the score and never lose a tour; on
 // built rooms, group turns, nudges, turns in place, exchanges and
 // evictions where each is the only move that meets a preference, and the
-// cost rules of exchanges and evictions.
+// cost rules of exchanges and evictions. The tests of suite PolishSweep
+// (many rooms or seeds) run as their own ctest entry, labelled slow.
 
 #include "optimize/polish.h"
 
@@ -66,7 +67,7 @@ int polish_score(const PreferenceReport& r) { return r.met - polish_gross(r); }
 // objects placed through the hooks end where the returned poses say (every
 // rejected move was put back), and the count of plannings stays within the
 // cap.
-TEST(Polish, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
+TEST(PolishSweep, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
   int kept = 0, slid = 0, swapped = 0, evicted = 0, rearranged = 0, turned = 0, rejected = 0,
       layouts = 0;
   for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
@@ -590,7 +591,7 @@ geometry::Scene shared_wall_scene() {
   })", "shared wall");
 }
 
-TEST(Polish, RearrangesSeveralObjectsWhenNoSingleMoveMendsAGrossAngleMiss) {
+TEST(PolishSweep, RearrangesSeveralObjectsWhenNoSingleMoveMendsAGrossAngleMiss) {
   const geometry::Scene scene = shared_wall_scene();
   ASSERT_EQ(layout_violation(scene), "");
   CostModel model(scene, scene_sequences(scene));
