@@ -39,7 +39,10 @@
 // every tour is kept at any cost. An eviction can also take the object's other relation
 // partners along, moved rigidly with it.
 // Last, each movable object whose heading no preference fixes is turned
-// square to its nearest wall, on the same conditions (score not lowered).
+// square to its nearest wall, on the same conditions (score not lowered),
+// at any cost: turned in place, or slid along the wall's normal to keep
+// its gap to the wall; when the nearest square heading fits neither way,
+// the cheapest of the other three that keeps every tour.
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order) and the chains are seeded (PolishHooks::seed), so the result is a
 // function of the layout and the seeds, whatever the thread count.
@@ -57,11 +60,14 @@
 namespace hrs::optimize {
 
 struct PolishHooks {
-  //! Exact validity of `poses` after moving object `moved`.
+  //! Exact validity of `poses` after moving object `moved`. The rule that
+  //! no stop is left without a free goal pose must judge every object whose
+  //! pose differs from the layout polish() started from, not only `moved`:
+  //! the rearrangement asks once per step that moves several.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
   //! The geometric part of `valid` alone (inside, no overlap, door clear),
-  //! cheaper; the rearrangement's search uses it, and `valid` on what it
-  //! plans. Unset: `valid`.
+  //! cheaper; the rearrangement's search asks it on every step, and `valid`
+  //! once per accepted step. Unset: `valid`.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> fits;
   //! Moves object `object` to `to` (C-space included).
   std::function<void(int object, const geometry::Pose2& to)> place;

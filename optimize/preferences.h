@@ -75,6 +75,10 @@ std::vector<geometry::Pose2> preferred_poses(const geometry::Scene& scene, const
                                              const std::vector<geometry::Pose2>& poses,
                                              int object);
 
+//! Spacing of the wall places the polish and the rearrangement try
+//! (wall_slides()' `step`), metres.
+inline constexpr double kWallSlideStep = 0.2;
+
 //! Poses of `object` against every wall at its wanted distance and angle,
 //! spaced `step` metres along each wall's extent (ends included), nearest
 //! the current position first: the places a wall preference can be met when

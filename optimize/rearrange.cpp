@@ -35,9 +35,6 @@ constexpr double kAnyObject = 0.25;
 //! Draws a holder makes for a place of its own before the step is dropped.
 constexpr int kHolderDraws = 8;
 
-//! Spacing of the wall places, metres (as the polish's slides).
-constexpr double kSlideStep = 0.2;
-
 }  // namespace
 
 int gross_misses(const PreferenceReport& r) {
@@ -89,7 +86,7 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
   std::vector<std::optional<std::vector<geometry::Pose2>>> slides(poses.size());
   const auto slides_of = [&](int k) -> const std::vector<geometry::Pose2>& {
     auto& w = slides[static_cast<std::size_t>(k)];
-    if (!w) w = wall_slides(scene, model, poses, k, kSlideStep);
+    if (!w) w = wall_slides(scene, model, poses, k, kWallSlideStep);
     return *w;
   };
   // A place for object k: half the draws among its `preferred` poses, half

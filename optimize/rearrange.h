@@ -56,7 +56,9 @@ struct RearrangeHooks {
   //! overlap, door clear), asked on every step.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> fits;
   //! The full checks (`fits` and no stop left without a free goal pose),
-  //! asked once per accepted step, with one of the objects it moved.
+  //! asked once per accepted step, with one of the objects it moved; the
+  //! stop rule must judge every object whose pose differs from the layout
+  //! searched from, not only `moved`.
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
   //! Whether object `object` at `to` stays clear of the kept tours' corridor.
   std::function<bool(int object, const geometry::Pose2& to)> clear;
