@@ -430,42 +430,55 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
   const double quarter = std::numbers::pi / 2;
   const double refused = normal + std::round(off / quarter) * quarter;
   const auto along = [](double a, double b) { return std::abs(std::sin(a - b)) < 1e-6; };
-  for (const bool lose : {false, true}) {
-    std::vector<Pose2> poses = poses_of(scene);
-    geometry::Scene scratch = scene;
-    PolishHooks hooks = exact_hooks(scratch);
-    hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
-      if (along(p[0].theta, refused)) return false;
-      for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-      return object_violation(scratch, moved).empty();
-    };
-    std::vector<double> planned;  // the headings planned
-    hooks.plan = [&](const std::vector<Pose2>& p) {
-      planned.push_back(p[0].theta);
-      CostTerms t = two_tours_found();
-      t.path_length = 3.0 + std::cos(p[0].theta - 0.3);  // the tilted bench: ~3.98
-      if (lose) t.tours_found = 1;
-      return t;
-    };
-    CostTerms terms = two_tours_found();
-    terms.path_length = 1.0;  // cheaper than any squared layout
-    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
-    // Both quarter turns planned once, then the cheaper again to keep it.
-    ASSERT_GE(planned.size(), 2u) << lose;
-    for (const double theta : planned) EXPECT_FALSE(along(theta, refused)) << theta;
-    if (lose) {
-      EXPECT_EQ(r.squared, 0);
-      EXPECT_EQ(poses, poses_of(scene));
-      continue;
+  // The planner's cost of a heading: 3 + cos(θ - phase). Both phases, so
+  // that the cheaper quarter turn is planned first in one and last in the
+  // other (keeping the last one planned would not pass).
+  for (const double phase : {0.3, 0.3 + std::numbers::pi}) {
+    const auto cost = [&](double theta) { return 3.0 + std::cos(theta - phase); };
+    for (const bool lose : {false, true}) {
+      const std::string what = "phase " + std::to_string(phase) + (lose ? " losing" : "");
+      std::vector<Pose2> poses = poses_of(scene);
+      geometry::Scene scratch = scene;
+      PolishHooks hooks = exact_hooks(scratch);
+      hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
+        if (along(p[0].theta, refused)) return false;
+        for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+        return object_violation(scratch, moved).empty();
+      };
+      std::vector<double> planned;  // the headings planned
+      hooks.plan = [&](const std::vector<Pose2>& p) {
+        planned.push_back(p[0].theta);
+        CostTerms t = two_tours_found();
+        t.path_length = cost(p[0].theta);
+        if (lose) t.tours_found = 1;
+        return t;
+      };
+      CostTerms terms = two_tours_found();
+      terms.path_length = 1.0;  // cheaper than any squared layout
+      const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+      // Both quarter turns planned once, then the cheaper again to keep it.
+      ASSERT_GE(planned.size(), 2u) << what;
+      for (const double theta : planned) EXPECT_FALSE(along(theta, refused)) << what;
+      if (lose) {
+        EXPECT_EQ(r.squared, 0) << what;
+        EXPECT_EQ(poses, poses_of(scene)) << what;
+        continue;
+      }
+      const double a = geometry::wrap_angle(refused + quarter),
+                   b = geometry::wrap_angle(refused - quarter);
+      const double cheaper = cost(a) < cost(b) ? a : b;
+      ASSERT_EQ(planned.size(), 3u) << what;
+      EXPECT_NEAR(geometry::wrap_angle(planned[2] - cheaper), 0.0, 1e-9) << what;
+      EXPECT_EQ(r.squared, 1) << what;
+      EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - cheaper), 0.0, 1e-9) << what;
+      EXPECT_NEAR(terms.path_length, cost(cheaper), 1e-12) << what;
+      EXPECT_EQ(violation_at(scratch, poses), "") << what;
     }
-    const double a = geometry::wrap_angle(refused + quarter), b = geometry::wrap_angle(refused - quarter);
-    const double cheaper = std::cos(a - 0.3) < std::cos(b - 0.3) ? a : b;
-    EXPECT_EQ(planned.size(), 3u);
-    EXPECT_EQ(r.squared, 1);
-    EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - cheaper), 0.0, 1e-9);
-    EXPECT_NEAR(terms.path_length, 3.0 + std::cos(cheaper - 0.3), 1e-12);
-    EXPECT_EQ(violation_at(scratch, poses), "");
   }
+  // The quarter turns' costs differ (no tie for "the cheaper"); the second
+  // phase reverses them, so the cheaper was planned first in one phase and
+  // last in the other.
+  EXPECT_GT(std::abs(std::cos(refused + quarter - 0.3) - std::cos(refused - quarter - 0.3)), 0.1);
 }
 
 // desks_scene(): the pose that meets the relation (on the line to the
