@@ -22,6 +22,7 @@
 #include "optimize/design.h"
 #include "optimize/preferences.h"
 #include "optimize/sequences.h"
+#include "polish_support.h"
 #include "scramble.h"
 
 namespace hrs::optimize {
@@ -29,23 +30,10 @@ namespace {
 
 using geometry::Pose2;
 
-//! A 64-bit hash of a layout (its poses to 0.1 mm and 1e-4 rad).
-std::uint64_t layout_hash(const std::vector<Pose2>& p, std::uint64_t salt) {
-  std::uint64_t h = salt;
-  for (const Pose2& q : p)
-    h = h * 1000003u ^
-        static_cast<std::uint64_t>(std::llround(1e4 * (q.x + 3 * q.y + 7 * q.theta)));
-  return h;
-}
-
-//! Angle preferences more than 20° off, and the polish's score, counted here
-//! from the report's residuals.
-int gross_here(const PreferenceReport& r) {
-  int n = 0;
-  for (const PreferenceCheck& c : r.checks)
-    n += c.angular() && c.residual > 20.0 * std::numbers::pi / 180.0;
-  return n;
-}
+using testing::layout_hash;
+// Angle preferences more than 20° off, counted from the report's residuals
+// (independently of optimize/rearrange.cpp).
+const auto gross_here = testing::gross_count;
 
 TEST(Rearrange, ReturnsOnlyValidLayoutsWithFewerGrossMissesAndNoLowerScore) {
   int cases = 0, with_gross = 0, returned = 0, moved_objects = 0, reruns = 0;

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The polish's last stage, squaring (optimize/polish.h): an object whose
+// heading no preference fixes is turned square to its nearest wall, slid
+// to keep its gap to the wall, and turned to the cheapest other square
+// heading when the nearest does not fit. Built rooms with the exact layout
+// checks and stand-in planners (part of optimize_polish_test).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "optimize/polish.h"
+#include "optimize/preferences.h"
+#include "optimize/sequences.h"
+#include "polish_support.h"
+
+namespace hrs::optimize {
+namespace {
+
+using geometry::Pose2;
+using geometry::Vec2;
+using testing::exact_hooks;
+using testing::movable_of;
+using testing::poses_of;
+using testing::two_tours_found;
+using testing::violation_at;
+
+// A lamp 5 cm from the top wall (its wall distance, met) at 24° to it, and
+// no preference on its heading. Squared to the wall about its centre it
+// would stand 6.4 cm farther off and lose its wall distance; the polish
+// slides it back along the wall's normal: square, still 5 cm from the wall,
+// on the same spot along it. With a fixed shelf where the slide would take
+// it, the squaring is refused (turned in place it loses the wall distance).
+TEST(Polish, SquaresAnObjectToItsWallKeepingItsGap) {
+  for (const bool shelf : {false, true}) {
+    const double half = 0.2 * (std::cos(0.4189) + std::sin(0.4189));  // 24°, its reach in y
+    std::string text = R"({
+      "format": "hrspace-scene/1", "name": "lamp",
+      "room": {"size": [5, 4]},
+      "door": {"center": [2.5, 0.0], "width": 0.9, "clear_depth": 0.3},
+      "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+      "objects": [
+        {"id": "lamp", "size": [0.4, 0.4], "pose": [2.0, Y, THETA], "wall": {"distance": 0.05}},
+        {"id": "box", "size": [0.5, 0.5], "pose": [4.5, 1.5, 0], "fixed": true}SHELF
+      ],
+      "activity": {"transitions": {"door": {"lamp": 1.0}, "lamp": {"box": 1.0}, "box": {"lamp": 1.0}},
+                   "sequences": 2, "visits": 2}
+    })";
+    const auto put = [&](const std::string& key, const std::string& value) {
+      text.replace(text.find(key), key.size(), value);
+    };
+    const auto exact = [](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.17g", v);
+      return std::string(buf);
+    };
+    put("Y", exact(4.0 - 0.05 - half));
+    put("THETA", exact(-std::numbers::pi / 2 + 0.4189));
+    // A 5 cm block in the squared, slid lamp's top left corner, clear of
+    // the lamp at 24° and of the lamp squared in place.
+    put("SHELF", shelf ? R"(, {"id": "shelf", "size": [0.05, 0.05], "pose": [1.83, 3.92, 0], "fixed": true})"
+                       : "");
+    const geometry::Scene scene = geometry::parse_scene(text, "lamp");
+    ASSERT_EQ(layout_violation(scene), "") << shelf;
+    CostModel model(scene, scene_sequences(scene));
+    model.set_bounded_preferences(true);
+    const std::vector<bool> movable = movable_of(scene);
+    std::vector<Pose2> poses = poses_of(scene);
+    ASSERT_EQ(check_preferences(scene, model, poses).met, 1) << shelf;
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
+    CostTerms terms = two_tours_found();
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+    EXPECT_EQ(check_preferences(scene, model, poses).met, 1) << shelf;
+    if (shelf) {
+      EXPECT_EQ(r.squared, 0);
+      EXPECT_EQ(poses[0], scene.objects[0].pose);
+      continue;
+    }
+    EXPECT_EQ(r.squared, 1);
+    EXPECT_NEAR(geometry::wrap_angle(poses[0].theta + std::numbers::pi / 2), 0.0, 1e-9);
+    EXPECT_NEAR(poses[0].x, 2.0, 1e-9);
+    // Its footprint's top, from the corners: 5 cm below the wall at y = 4.
+    geometry::Object lamp = scene.objects[0];
+    lamp.pose = poses[0];
+    double top = -1.0;
+    for (const Vec2& v : geometry::world_footprint(lamp)) top = std::max(top, v.y);
+    EXPECT_NEAR(top, 4.0 - 0.05, 1e-9);
+    EXPECT_EQ(violation_at(scratch, poses), "");
+  }
+}
+
+// A bench alone in a room's middle at 25° to the room, no preference on its
+// heading. A stand-in check refuses the bench at its nearest square heading
+// and at the half turn from it (as a stop it would cover); the two quarter
+// turns are valid, and the planner's cost depends on the heading. The
+// polish plans both and keeps the cheaper, at any cost over the tilted
+// layout; with a planner that loses a tour on every squared layout, it
+// keeps none.
+TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "bench",
+    "room": {"size": [5, 4]},
+    "door": {"center": [2.5, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "bench", "size": [1.2, 0.4], "pose": [2.5, 2.2, 0.4363323129985824]},
+      {"id": "box", "size": [0.5, 0.5], "pose": [4.5, 1.5, 0], "fixed": true}
+    ],
+    "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"box": 1.0}, "box": {"bench": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "bench");
+  ASSERT_EQ(layout_violation(scene), "");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable = movable_of(scene);
+  const double normal = model.wall_normal_angle(model.nearest_wall(0, scene.objects[0].pose));
+  const double off = geometry::wrap_angle(scene.objects[0].pose.theta - normal);
+  const double quarter = std::numbers::pi / 2;
+  const double refused = normal + std::round(off / quarter) * quarter;
+  const auto along = [](double a, double b) { return std::abs(std::sin(a - b)) < 1e-6; };
+  // The planner's cost of a heading: 3 + cos(θ - phase). Both phases, so
+  // that the cheaper quarter turn is planned first in one and last in the
+  // other (keeping the last one planned would not pass).
+  for (const double phase : {0.3, 0.3 + std::numbers::pi}) {
+    const auto cost = [&](double theta) { return 3.0 + std::cos(theta - phase); };
+    for (const bool lose : {false, true}) {
+      const std::string what = "phase " + std::to_string(phase) + (lose ? " losing" : "");
+      std::vector<Pose2> poses = poses_of(scene);
+      geometry::Scene scratch = scene;
+      PolishHooks hooks = exact_hooks(scratch);
+      hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
+        if (along(p[0].theta, refused)) return false;
+        for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+        return object_violation(scratch, moved).empty();
+      };
+      std::vector<double> planned;  // the headings planned
+      hooks.plan = [&](const std::vector<Pose2>& p) {
+        planned.push_back(p[0].theta);
+        CostTerms t = two_tours_found();
+        t.path_length = cost(p[0].theta);
+        if (lose) t.tours_found = 1;
+        return t;
+      };
+      CostTerms terms = two_tours_found();
+      terms.path_length = 1.0;  // cheaper than any squared layout
+      const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+      // Both quarter turns planned once, then the cheaper again to keep it.
+      ASSERT_GE(planned.size(), 2u) << what;
+      for (const double theta : planned) EXPECT_FALSE(along(theta, refused)) << what;
+      if (lose) {
+        EXPECT_EQ(r.squared, 0) << what;
+        EXPECT_EQ(poses, poses_of(scene)) << what;
+        continue;
+      }
+      const double a = geometry::wrap_angle(refused + quarter),
+                   b = geometry::wrap_angle(refused - quarter);
+      const double cheaper = cost(a) < cost(b) ? a : b;
+      ASSERT_EQ(planned.size(), 3u) << what;
+      EXPECT_NEAR(geometry::wrap_angle(planned[2] - cheaper), 0.0, 1e-9) << what;
+      EXPECT_EQ(r.squared, 1) << what;
+      EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - cheaper), 0.0, 1e-9) << what;
+      EXPECT_NEAR(terms.path_length, cost(cheaper), 1e-12) << what;
+      EXPECT_EQ(violation_at(scratch, poses), "") << what;
+    }
+  }
+  // The quarter turns' costs differ (no tie for "the cheaper"); the second
+  // phase reverses them, so the cheaper was planned first in one phase and
+  // last in the other.
+  EXPECT_GT(std::abs(std::cos(refused + quarter - 0.3) - std::cos(refused - quarter - 0.3)), 0.1);
+}
+
+}  // namespace
+}  // namespace hrs::optimize
