@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -543,17 +544,26 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     const double quarter = std::numbers::pi / 2;
     const double nearest = std::round(off / quarter);
     if (std::abs(off - nearest * quarter) < kSquareTolerance) continue;
-    // Quarter turns from the wall's normal, nearest `off` first (ties: the
-    // smaller turn first, for one order on every machine).
+    // Quarter turns from the wall's normal, nearest `off` first (a tie, an
+    // object at 45°, keeps the order below: the lower multiple of 90°).
     std::vector<double> squares;
     for (int k = -2; k <= 1; ++k) squares.push_back(k * quarter);
     std::stable_sort(squares.begin(), squares.end(), [&](double a, double b) {
       return std::abs(geometry::wrap_angle(off - a)) < std::abs(geometry::wrap_angle(off - b));
     });
+    // The footprint's reach towards the wall: the least signed distance of
+    // its corners from the wall's line, negative beyond it (a quarter turn
+    // can push a long object through the wall, which a clamped distance
+    // would not show).
+    const geometry::Vec2 wall_at = scene.room.polygon[static_cast<std::size_t>(wall)];
+    const geometry::Vec2 inward{std::cos(normal), std::sin(normal)};
     const auto gap = [&](const geometry::Pose2& at) {
       geometry::Object o = scene.objects[i];
       o.pose = at;
-      return model.wall_distance(geometry::world_footprint(o), wall);
+      double reach = std::numeric_limits<double>::infinity();
+      for (const geometry::Vec2& c : geometry::world_footprint(o))
+        reach = std::min(reach, (c.x - wall_at.x) * inward.x + (c.y - wall_at.y) * inward.y);
+      return reach;
     };
     const double gap_was = gap(poses[i]);
     // The first of the object turned in place and slid to keep its gap, at
@@ -586,10 +596,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     }
     // The nearest square heading does not fit (a lamp in a corner whose
     // front would face a dresser covers a stop): each other one that does
-    // is planned, and the cheapest whose tours are all found is kept.
-    std::optional<std::pair<geometry::Pose2, PreferenceReport>> best;
-    double best_cost = 0.0;
-    for (std::size_t k = 1; k < squares.size() && budget_left(); ++k) {
+    // is planned while two plannings are left (one to evaluate, one to
+    // keep), and the cheapest whose tours are all found is kept; when its
+    // second plan loses a tour, the next cheapest is tried.
+    std::vector<std::pair<double, std::pair<geometry::Pose2, PreferenceReport>>> found;
+    const auto two_left = [&] {
+      return out.tried - rearrange_tries + 1 < max_tries && !(stop && stop->load());
+    };
+    for (std::size_t k = 1; k < squares.size() && two_left(); ++k) {
       auto c = candidate(squares[k]);
       if (!c) continue;
       ++out.tried;
@@ -598,13 +612,18 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       hooks.place(object, c->first);
       const CostTerms t = hooks.plan(q);
       hooks.place(object, poses[i]);
-      if (t.tours_found < terms.tours_found || (best && t.total() >= best_cost)) continue;
-      best = std::move(c);
-      best_cost = t.total();
+      if (t.tours_found >= terms.tours_found) found.emplace_back(t.total(), std::move(*c));
     }
-    if (best && budget_left()) {
+    // Cheapest first; equal costs keep the order planned.
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto& [cost, c] : found) {
+      if (!budget_left()) break;
       ++out.tried;
-      if (try_moves({{object, best->first}}, best->second)) ++out.squared;
+      if (try_moves({{object, c.first}}, c.second)) {
+        ++out.squared;
+        break;
+      }
     }
   }
   return out;

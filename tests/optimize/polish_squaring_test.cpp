@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The polish's last stage, squaring (optimize/polish.h): an object whose
 // heading no preference fixes is turned square to its nearest wall, slid
-// to keep its gap to the wall, and turned to the cheapest other square
-// heading when the nearest does not fit. Built rooms with the exact layout
+// to keep its reach towards the wall, and turned to the cheapest other
+// square heading when the nearest does not fit (the next cheapest when the
+// cheapest, planned again, loses a tour), within the planning budget. Built rooms with the exact layout
 // checks and stand-in planners (part of optimize_polish_test).
 
 #include <gtest/gtest.h>
@@ -174,6 +175,140 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
   // phase reverses them, so the cheaper was planned first in one phase and
   // last in the other.
   EXPECT_GT(std::abs(std::cos(refused + quarter - 0.3) - std::cos(refused - quarter - 0.3)), 0.1);
+
+  // The cheaper heading loses a tour when it is planned again to be kept
+  // (a planner whose answer depends on what it planned before): the other
+  // quarter turn is planned and kept.
+  for (const double phase : {0.3, 0.3 + std::numbers::pi}) {
+    const auto cost = [&](double theta) { return 3.0 + std::cos(theta - phase); };
+    const double a = geometry::wrap_angle(refused + quarter),
+                 b = geometry::wrap_angle(refused - quarter);
+    const double cheaper = cost(a) < cost(b) ? a : b, dearer = cost(a) < cost(b) ? b : a;
+    std::vector<Pose2> poses = poses_of(scene);
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
+      if (along(p[0].theta, refused)) return false;
+      for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+      return object_violation(scratch, moved).empty();
+    };
+    std::vector<double> planned;
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      // `along` holds for opposite headings too; this tells the two apart.
+      const auto same = [](double u, double v) { return std::abs(geometry::wrap_angle(u - v)) < 1e-6; };
+      const bool again = same(p[0].theta, cheaper) &&
+                         std::any_of(planned.begin(), planned.end(), [&](double t) { return same(t, cheaper); });
+      planned.push_back(p[0].theta);
+      CostTerms t = two_tours_found();
+      t.path_length = cost(p[0].theta);
+      if (again) t.tours_found = 1;
+      return t;
+    };
+    CostTerms terms = two_tours_found();
+    terms.path_length = 1.0;
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+    ASSERT_EQ(planned.size(), 4u) << phase;
+    EXPECT_NEAR(geometry::wrap_angle(planned[2] - cheaper), 0.0, 1e-9) << phase;
+    EXPECT_NEAR(geometry::wrap_angle(planned[3] - dearer), 0.0, 1e-9) << phase;
+    EXPECT_EQ(r.squared, 1) << phase;
+    EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - dearer), 0.0, 1e-9) << phase;
+    EXPECT_NEAR(terms.path_length, cost(dearer), 1e-12) << phase;
+  }
+
+  // The budget: with two plannings left, one heading is evaluated and kept
+  // (the old order evaluated two and had none left to keep either); with
+  // one left, none is evaluated.
+  for (const int budget : {1, 2}) {
+    std::vector<Pose2> poses = poses_of(scene);
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
+      if (along(p[0].theta, refused)) return false;
+      for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+      return object_violation(scratch, moved).empty();
+    };
+    std::vector<double> planned;
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      planned.push_back(p[0].theta);
+      return two_tours_found();
+    };
+    CostTerms terms = two_tours_found();
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, budget);
+    if (budget == 1) {
+      EXPECT_TRUE(planned.empty());
+      EXPECT_EQ(r.squared, 0);
+      EXPECT_EQ(poses, poses_of(scene));
+      continue;
+    }
+    ASSERT_EQ(planned.size(), 2u);
+    EXPECT_NEAR(geometry::wrap_angle(planned[1] - planned[0]), 0.0, 1e-12);
+    EXPECT_FALSE(along(planned[0], refused));
+    EXPECT_EQ(r.squared, 1);
+    EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - planned[0]), 0.0, 1e-12);
+  }
+}
+
+// A bench 2 cm from the top wall (its wall distance, met) at 40° to the
+// wall's normal. Turned square about its centre, its long side would stand
+// along the normal and reach 2.4 cm beyond the wall; the slide takes it back
+// by the whole reach, not only by its old gap: square, 2 cm from the wall.
+TEST(Polish, SquaresALongObjectThatItsTurnPushesThroughTheWall) {
+  const double tilt = 0.6981317007977318;  // 40°
+  const double theta = -std::numbers::pi / 2 + tilt;
+  char text[2048];
+  const auto scene_at = [&](double y) {
+    std::snprintf(text, sizeof text, R"({
+    "format": "hrspace-scene/1", "name": "bench",
+    "room": {"size": [5, 4]},
+    "door": {"center": [2.5, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "bench", "size": [1.2, 0.3], "pose": [2.0, %.17g, %.17g], "wall": {"distance": 0.02}},
+      {"id": "box", "size": [0.5, 0.5], "pose": [4.5, 1.5, 0], "fixed": true}
+    ],
+    "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"box": 1.0}, "box": {"bench": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", y, theta);
+    return geometry::parse_scene(text, "bench");
+  };
+  // The bench's half-extent in y at its heading, from its footprint.
+  geometry::Object probe = scene_at(2.0).objects[0];
+  probe.pose = {0.0, 0.0, theta};
+  double reach = -1.0;
+  for (const Vec2& v : geometry::world_footprint(probe)) reach = std::max(reach, v.y);
+  const geometry::Scene scene = scene_at(4.0 - 0.02 - reach);
+  ASSERT_EQ(layout_violation(scene), "");
+  // The premise: turned in place, the bench crosses the wall by more than
+  // its 2 cm gap.
+  geometry::Object turned = scene.objects[0];
+  turned.pose.theta = -std::numbers::pi / 2;
+  double top = -1.0;
+  for (const Vec2& v : geometry::world_footprint(turned)) top = std::max(top, v.y);
+  ASSERT_GT(top, 4.0 + 0.02);
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  std::vector<Pose2> poses = poses_of(scene);
+  ASSERT_EQ(check_preferences(scene, model, poses).met, 1);
+  geometry::Scene scratch = scene;
+  PolishHooks hooks = exact_hooks(scratch);
+  std::vector<double> planned;
+  hooks.plan = [&](const std::vector<Pose2>& p) {
+    planned.push_back(p[0].theta);
+    return two_tours_found();
+  };
+  CostTerms terms = two_tours_found();
+  const PolishResult r = polish(scene, model, movable_of(scene), poses, terms, hooks, 50);
+  EXPECT_EQ(r.squared, 1);
+  EXPECT_EQ(planned.size(), 1u);  // the nearest heading fits: no other is planned
+  EXPECT_NEAR(geometry::wrap_angle(poses[0].theta + std::numbers::pi / 2), 0.0, 1e-9);
+  EXPECT_NEAR(poses[0].x, 2.0, 1e-9);
+  geometry::Object bench = scene.objects[0];
+  bench.pose = poses[0];
+  top = -1.0;
+  for (const Vec2& v : geometry::world_footprint(bench)) top = std::max(top, v.y);
+  EXPECT_NEAR(top, 4.0 - 0.02, 1e-9);
+  EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
+  EXPECT_EQ(violation_at(scratch, poses), "");
 }
 
 }  // namespace
