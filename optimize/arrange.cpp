@@ -89,7 +89,7 @@ ArrangeResult arrange(const CostModel& model, const std::vector<bool>& movable,
   assert(hooks.valid && hooks.set);
   ArrangeResult out;
   const auto interior = [&](const std::vector<geometry::Pose2>& p) {
-    return model.interior_terms(model.interior(p)).total();
+    return model.interior_terms(model.interior(p)).total() + (options.extra ? options.extra(p) : 0.0);
   };
   out.interior_before = interior(poses);
   out.poses = poses;
@@ -122,6 +122,29 @@ ArrangeResult arrange(const CostModel& model, const std::vector<bool>& movable,
     out.interior_after = r.best_cost;
   }
   return out;
+}
+
+std::function<double(const std::vector<geometry::Pose2>& poses)> opening_pull(
+    const geometry::Scene& scene, const CostModel& model, const std::vector<bool>& movable) {
+  std::vector<int> loose;
+  for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+    const auto& wall = scene.objects[i].wall;
+    if (movable[i] && !(wall && wall->distance)) loose.push_back(static_cast<int>(i));
+  }
+  if (loose.empty()) return {};
+  const int edges = static_cast<int>(scene.room.polygon.size());
+  return [&scene, &model, loose, edges](const std::vector<geometry::Pose2>& poses) {
+    double energy = 0.0;
+    for (const int i : loose) {
+      geometry::Object o = scene.objects[static_cast<std::size_t>(i)];
+      o.pose = poses[static_cast<std::size_t>(i)];
+      const geometry::Polygon footprint = geometry::world_footprint(o);
+      double d = 1.0;
+      for (int e = 0; e < edges && d > 0.0; ++e) d = std::min(d, model.wall_distance(footprint, e));
+      energy += kOpeningPull * d;
+    }
+    return energy;
+  };
 }
 
 ArrangeReport arrange_toured(const geometry::Scene& scene, const CostModel& model,

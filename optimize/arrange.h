@@ -73,7 +73,26 @@ struct ArrangeOptions {
   //! t_start = this × the input's interior cost; cooling to t_start × t_end_ratio.
   double t_start_fraction = 0.3;
   double t_end_ratio = 1e-4;
+  //! Added to the interior cost of every proposal (may be unset): an energy
+  //! of the arrangement only, not a cost of the design (opening_pull()).
+  std::function<double(const std::vector<geometry::Pose2>& poses)> extra;
 };
+
+//! The opening arrangement's pull, per metre between an object's footprint
+//! and its nearest wall, on each movable object without a wall distance
+//! preference, counted up to 1 m: at most an eighth of one unmet preference
+//! (kPreferencePenalty), so that no preference is given up for it.
+inline constexpr double kOpeningPull = 0.25;
+
+//! The energy that draws the movable objects without a wall distance
+//! preference to the walls (kOpeningPull · min(1 m, distance to the
+//! nearest wall) each): free-standing furniture against the walls leaves
+//! the room's middle to the wheelchair's manoeuvres. Interior-design
+//! systems place such pieces by a prior on their distance to the nearest
+//! wall (Yu et al., "Make it Home", SIGGRAPH 2011, §4.1); this is the
+//! simplest such prior. Empty when no object is concerned.
+std::function<double(const std::vector<geometry::Pose2>& poses)> opening_pull(
+    const geometry::Scene& scene, const CostModel& model, const std::vector<bool>& movable);
 
 struct ArrangeResult {
   std::vector<geometry::Pose2> poses;  //!< the best valid layout seen (the input if none)

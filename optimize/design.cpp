@@ -89,6 +89,7 @@ class DesignRun {
       plan_current();  // the annealing starts from the unblocked layout
       current_terms_ = model_.evaluate(poses_, round_.tours(), &round_.blockage());
     }
+    if (options_.planner.prefer) open_arrangement();
     focus_current_ = escape_.walling_objects();
     current_tours_ = round_.tours();
     const AnnealOptions schedule = make_schedule();
@@ -286,6 +287,53 @@ class DesignRun {
     }
     result_.trace.push_back(step);
     if (progress_) progress_(step);
+  }
+
+  //! The opening arrangement (docs/optimize.md "Preferences", with
+  //! PlannerConfig::prefer): before the tour annealing, the input layout is
+  //! re-packed on the interior cost alone (arrange(), nothing planned), the
+  //! objects without a wall distance preference drawn to the walls
+  //! (opening_pull()). The arranged layout is toured once, and the
+  //! annealing starts from it when it finds at least the input's tours at a
+  //! lower total cost; else the input is placed and toured again.
+  void open_arrangement() {
+    auto& o = result_.opening;
+    o.ran = true;
+    o.tours_found_before = o.tours_found_after = current_terms_.tours_found;
+    o.cost_before = o.cost_after = current_terms_.total();
+    const auto t0 = Clock::now();
+    ArrangeHooks hooks;
+    hooks.valid = valid_;
+    hooks.set = move_;
+    hooks.preferred = [this](const std::vector<Pose2>& p, int k, std::mt19937_64& rng) {
+      return preferred_move(p, k, rng);
+    };
+    ArrangeOptions options;
+    options.extra = opening_pull(scene_, model_, movable_);
+    // A seed apart from the final arrangement's (seed + round).
+    const ArrangeResult a = arrange(model_, movable_, poses_, moves(), options, hooks,
+                                    options_.seed + 7919, stop_);
+    o.proposals = a.proposals;
+    o.ms = 1e3 * seconds_since(t0);
+    if (a.poses == poses_ || (stop_ && stop_->load())) return;
+    const std::vector<Pose2> input = poses_;
+    const auto place = [&](const std::vector<Pose2>& from, const std::vector<Pose2>& to) {
+      for (std::size_t i = 0; i < to.size(); ++i)
+        if (to[i] != from[i]) move_(static_cast<int>(i), to[i]);
+    };
+    place(input, a.poses);
+    const CostTerms t = replan(a.poses);
+    o.tours_found_after = t.tours_found;
+    o.cost_after = t.total();
+    if (t.tours_found >= current_terms_.tours_found && t.total() < current_terms_.total()) {
+      o.kept = true;
+      poses_ = a.poses;
+      current_terms_ = t;
+      escape_.refresh_open_stops();
+      return;
+    }
+    place(a.poses, input);
+    current_terms_ = replan(poses_);
   }
 
   //! Tours the placed layout `p` in a round of its own.

@@ -133,6 +133,18 @@ struct DesignResult {
   //! Moves refused because they would leave a stop without any free goal
   //! pose (docs/optimize.md "Blocked layouts"), counted at each draw.
   int covering_moves = 0;
+  //! The opening arrangement of the input layout before the annealing
+  //! (PlannerConfig::prefer; docs/optimize.md "Preferences"): whether it
+  //! ran and was kept, the input's and the arranged layout's tours found
+  //! and total cost (equal when nothing was arranged), its proposals and
+  //! time (the tour round not included).
+  struct Opening {
+    bool ran = false, kept = false;
+    int proposals = 0;
+    int tours_found_before = 0, tours_found_after = 0;
+    double cost_before = 0.0, cost_after = 0.0;
+    double ms = 0.0;
+  } opening;
   //! The preference arrangement of the annealer's best layout
   //! (optimize/arrange.h): preferences met and tours found before and after,
   //! and whether it was kept (at least the same tours, a lower total cost).

@@ -96,7 +96,7 @@ const std::array<PlannerConfig::Switch, 6>& PlannerConfig::switches() {
        "a proposal stops being planned once a lower bound of its cost is rejected"},
       {"prefer", &PlannerConfig::prefer,
        "preference terms bounded and scaled to their tolerances, preference moves, an "
-       "arrangement clear of the found tours, and a "
+       "opening arrangement of the input, an arrangement clear of the found tours, and a "
        "final polish that keeps every found tour"},
       {"rescue", &PlannerConfig::rescue,
        "after the design, unfound tours are planned again with the lattice planner "

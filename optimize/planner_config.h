@@ -53,7 +53,8 @@ struct PlannerConfig {
   //! Ours: preferences as a designer reads them (optimize/preferences.h):
   //! each interior term is bounded and scaled to its tolerance, the annealer
   //! also proposes preference moves (against a wall, a wall slot, aligned
-  //! with a relation partner), an arrangement re-packs the best layout on
+  //! with a relation partner), an opening arrangement re-packs the input
+  //! before the annealing, an arrangement re-packs the best layout on
   //! the interior cost clear of the found tours' corridor
   //! (optimize/arrange.h), and a final polish moves each object to a pose
   //! that meets its preferences wherever every found tour stays found.
