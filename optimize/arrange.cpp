@@ -7,6 +7,7 @@
 #include <cassert>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "geometry/polygon_ops.h"
 #include "optimize/preferences.h"
@@ -133,18 +134,40 @@ std::function<double(const std::vector<geometry::Pose2>& poses)> opening_pull(
   }
   if (loose.empty()) return {};
   const int edges = static_cast<int>(scene.room.polygon.size());
-  return [&scene, &model, loose, edges](const std::vector<geometry::Pose2>& poses) {
+  // Each loose object's term at the pose it was last computed for: a
+  // proposal moves one object, so one term is computed again (the others
+  // are compared by pose only).
+  struct Term {
+    geometry::Pose2 at;
+    double value = -1.0;
+  };
+  auto terms = std::make_shared<std::vector<Term>>(loose.size());
+  return [&scene, &model, loose, edges, terms](const std::vector<geometry::Pose2>& poses) {
     double energy = 0.0;
-    for (const int i : loose) {
-      geometry::Object o = scene.objects[static_cast<std::size_t>(i)];
-      o.pose = poses[static_cast<std::size_t>(i)];
-      const geometry::Polygon footprint = geometry::world_footprint(o);
-      double d = 1.0;
-      for (int e = 0; e < edges && d > 0.0; ++e) d = std::min(d, model.wall_distance(footprint, e));
-      energy += kOpeningPull * d;
+    for (std::size_t k = 0; k < loose.size(); ++k) {
+      const auto i = static_cast<std::size_t>(loose[k]);
+      Term& t = (*terms)[k];
+      if (t.value < 0.0 || t.at != poses[i]) {
+        geometry::Object o = scene.objects[i];
+        o.pose = poses[i];
+        const geometry::Polygon footprint = geometry::world_footprint(o);
+        double d = 1.0;
+        for (int e = 0; e < edges && d > 0.0; ++e) d = std::min(d, model.wall_distance(footprint, e));
+        t = {poses[i], kOpeningPull * d};
+      }
+      energy += t.value;
     }
     return energy;
   };
+}
+
+int opening_proposals_per_object(const geometry::Scene& scene) {
+  std::size_t vertices = 0;
+  for (const auto& o : scene.objects) vertices += o.footprint.size();
+  const ArrangeOptions defaults;
+  const std::size_t per_object = static_cast<std::size_t>(defaults.iterations_per_object);
+  if (vertices * per_object <= kOpeningWork) return defaults.iterations_per_object;
+  return static_cast<int>(kOpeningWork / vertices);
 }
 
 ArrangeReport arrange_toured(const geometry::Scene& scene, const CostModel& model,

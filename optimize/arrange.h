@@ -20,6 +20,7 @@
 // step.
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -93,6 +94,18 @@ inline constexpr double kOpeningPull = 0.25;
 //! simplest such prior. Empty when no object is concerned.
 std::function<double(const std::vector<geometry::Pose2>& poses)> opening_pull(
     const geometry::Scene& scene, const CostModel& model, const std::vector<bool>& movable);
+
+//! The opening arrangement's work bound: proposals per movable object
+//! times the footprints' vertices in the scene (300 × 256).
+inline constexpr std::size_t kOpeningWork = 300 * 256;
+//! The opening arrangement's proposals per movable object: the
+//! arrangement's 300 while 300 times the scene's footprint vertices stays
+//! within kOpeningWork (64 box footprints), else kOpeningWork over the
+//! vertices (0: no opening). Every check of a proposal is linear in the
+//! footprints' vertices and moves the C-space; at the format's limits (100
+//! objects of 1000 vertices) 300 proposals an object would outlast the
+//! design's first iteration many times over.
+int opening_proposals_per_object(const geometry::Scene& scene);
 
 struct ArrangeResult {
   std::vector<geometry::Pose2> poses;  //!< the best valid layout seen (the input if none)

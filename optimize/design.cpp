@@ -89,7 +89,7 @@ class DesignRun {
       plan_current();  // the annealing starts from the unblocked layout
       current_terms_ = model_.evaluate(poses_, round_.tours(), &round_.blockage());
     }
-    if (options_.planner.prefer) open_arrangement();
+    if (options_.planner.prefer && options_.opening) open_arrangement();
     focus_current_ = escape_.walling_objects();
     current_tours_ = round_.tours();
     const AnnealOptions schedule = make_schedule();
@@ -184,6 +184,7 @@ class DesignRun {
   //! a lower bound of it that `acceptance` rejects (early rejection).
   double cost(const std::vector<Pose2>& p, const Move& move, const Acceptance& acceptance) {
     if (move.object < 0) return current_terms_.total();
+    proposed_ = true;
     ++iteration_;
     round_.move(move.object, move.to);
     planning_ms_ = 0.0;
@@ -257,7 +258,7 @@ class DesignRun {
   //! Called for the initial layout (before any proposal) or right after an
   //! accepted proposal: the round's tours and the terms belong to the current layout.
   void new_best() {
-    if (iteration_ == 0) {
+    if (!proposed_) {
       result_.final = current_terms_;
       result_.tours = current_tours_;
     } else {
@@ -298,6 +299,8 @@ class DesignRun {
   //! lower total cost; else the input is placed and toured again.
   void open_arrangement() {
     auto& o = result_.opening;
+    const int per_object = opening_proposals_per_object(scene_);
+    if (per_object == 0) return;  // beyond the work bound: no opening
     o.ran = true;
     o.tours_found_before = o.tours_found_after = current_terms_.tours_found;
     o.cost_before = o.cost_after = current_terms_.total();
@@ -309,6 +312,7 @@ class DesignRun {
       return preferred_move(p, k, rng);
     };
     ArrangeOptions options;
+    options.iterations_per_object = per_object;
     options.extra = opening_pull(scene_, model_, movable_);
     // A seed apart from the final arrangement's (seed + round).
     const ArrangeResult a = arrange(model_, movable_, poses_, moves(), options, hooks,
@@ -519,7 +523,10 @@ class DesignRun {
   EscapePolicy::ValidFn valid_;
   EscapePolicy::PlaceFn move_;
   std::vector<int> focus_current_;  //!< walling_objects() of the current layout
-  int iteration_ = 0;  //!< 0: the initial layout; proposals count from 1
+  //! The round of the last plan: 0 the input layout, then the opening
+  //! arrangement's (one or two), then one per proposal.
+  int iteration_ = 0;
+  bool proposed_ = false;  //!< the annealer has made a proposal (new_best: not the start)
   double planning_ms_ = 0.0;
   TourRound::Outcome outcome_;
   bool rejected_early_ = false;

@@ -62,6 +62,10 @@ struct DesignOptions {
   //! Every object's α̂ set to 1 (CostModel::set_uniform_alpha): the control
   //! of the α experiment; off in every product run.
   bool uniform_alpha = false;
+  //! The opening arrangement of the input before the annealing, when
+  //! `planner.prefer` is on (docs/optimize.md "Arrangement"); off only to
+  //! study the annealing alone.
+  bool opening = true;
   //! When set, the object poses of every planned layout are appended here,
   //! in planning order (the input of replay_planning()).
   std::vector<std::vector<Pose2>>* layouts_out = nullptr;

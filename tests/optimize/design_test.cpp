@@ -262,6 +262,23 @@ TEST(Design, OpeningArrangementIsKeptOnlyWhenItToursAsWellForLess) {
   }
   EXPECT_GT(kept, 0);  // the rule is exercised on its accepting side
   std::printf("opening arrangements kept %d, refused %d\n", kept, refused);
+  // With no proposal (or none better), the design's best is the start, kept
+  // or not, with its terms and all its tours (the opening's rounds once
+  // made the start look like a proposal: no tours, cost 0).
+  for (const int iterations : {0, 6}) {
+    const Scene scene = geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json");
+    DesignOptions options;
+    options.planner = hrs::optimize::PlannerConfig::from_preset("baseline");
+    options.planner.escape = false;
+    options.seed = 3;
+    options.iterations = iterations;
+    options.threads = 2;
+    const auto r = design(scene, options);
+    EXPECT_TRUE(r.opening.ran) << iterations;
+    EXPECT_EQ(r.tours.size(), r.sequences.size()) << iterations;
+    EXPECT_EQ(r.final.tours_total, static_cast<int>(r.sequences.size())) << iterations;
+    EXPECT_GT(r.final.total(), 0.0) << iterations;
+  }
 }
 
 TEST(Design, InvalidStartingLayoutIsSeparatedOrReportedInvalid) {
