@@ -126,6 +126,17 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
   const double quarter = std::numbers::pi / 2;
   const double refused = normal + std::round(off / quarter) * quarter;
   const auto along = [](double a, double b) { return std::abs(std::sin(a - b)) < 1e-6; };
+  // The exact checks (on `scratch`), which also refuse the bench along the
+  // nearest square heading: at it or at the half turn from it.
+  const auto refusing = [&](geometry::Scene& scratch) {
+    PolishHooks hooks = exact_hooks(scratch);
+    hooks.valid = [&scratch, &along, refused](const std::vector<Pose2>& p, int moved) {
+      if (along(p[0].theta, refused)) return false;
+      for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
+      return object_violation(scratch, moved).empty();
+    };
+    return hooks;
+  };
   // The planner's cost of a heading: 3 + cos(θ - phase). Both phases, so
   // that the cheaper quarter turn is planned first in one and last in the
   // other (keeping the last one planned would not pass).
@@ -135,12 +146,7 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
       const std::string what = "phase " + std::to_string(phase) + (lose ? " losing" : "");
       std::vector<Pose2> poses = poses_of(scene);
       geometry::Scene scratch = scene;
-      PolishHooks hooks = exact_hooks(scratch);
-      hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
-        if (along(p[0].theta, refused)) return false;
-        for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-        return object_violation(scratch, moved).empty();
-      };
+      PolishHooks hooks = refusing(scratch);
       std::vector<double> planned;  // the headings planned
       hooks.plan = [&](const std::vector<Pose2>& p) {
         planned.push_back(p[0].theta);
@@ -186,12 +192,7 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
     const double cheaper = cost(a) < cost(b) ? a : b, dearer = cost(a) < cost(b) ? b : a;
     std::vector<Pose2> poses = poses_of(scene);
     geometry::Scene scratch = scene;
-    PolishHooks hooks = exact_hooks(scratch);
-    hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
-      if (along(p[0].theta, refused)) return false;
-      for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-      return object_violation(scratch, moved).empty();
-    };
+    PolishHooks hooks = refusing(scratch);
     std::vector<double> planned;
     hooks.plan = [&](const std::vector<Pose2>& p) {
       // `along` holds for opposite headings too; this tells the two apart.
@@ -221,12 +222,7 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
   for (const int budget : {1, 2}) {
     std::vector<Pose2> poses = poses_of(scene);
     geometry::Scene scratch = scene;
-    PolishHooks hooks = exact_hooks(scratch);
-    hooks.valid = [&](const std::vector<Pose2>& p, int moved) {
-      if (along(p[0].theta, refused)) return false;
-      for (std::size_t i = 0; i < p.size(); ++i) scratch.objects[i].pose = p[i];
-      return object_violation(scratch, moved).empty();
-    };
+    PolishHooks hooks = refusing(scratch);
     std::vector<double> planned;
     hooks.plan = [&](const std::vector<Pose2>& p) {
       planned.push_back(p[0].theta);
