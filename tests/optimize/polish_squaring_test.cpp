@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -30,6 +31,13 @@ using testing::movable_of;
 using testing::poses_of;
 using testing::two_tours_found;
 using testing::violation_at;
+
+//! The highest y of an object's footprint at its pose.
+double top_of(const geometry::Object& object) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (const Vec2& v : geometry::world_footprint(object)) top = std::max(top, v.y);
+  return top;
+}
 
 // A lamp 5 cm from the top wall (its wall distance, met) at 24° to it, and
 // no preference on its heading. Squared to the wall about its centre it
@@ -90,8 +98,7 @@ TEST(Polish, SquaresAnObjectToItsWallKeepingItsGap) {
     // Its footprint's top, from the corners: 5 cm below the wall at y = 4.
     geometry::Object lamp = scene.objects[0];
     lamp.pose = poses[0];
-    double top = -1.0;
-    for (const Vec2& v : geometry::world_footprint(lamp)) top = std::max(top, v.y);
+    const double top = top_of(lamp);
     EXPECT_NEAR(top, 4.0 - 0.05, 1e-9);
     EXPECT_EQ(violation_at(scratch, poses), "");
   }
@@ -270,17 +277,14 @@ TEST(Polish, SquaresALongObjectThatItsTurnPushesThroughTheWall) {
   // The bench's half-extent in y at its heading, from its footprint.
   geometry::Object probe = scene_at(2.0).objects[0];
   probe.pose = {0.0, 0.0, theta};
-  double reach = -1.0;
-  for (const Vec2& v : geometry::world_footprint(probe)) reach = std::max(reach, v.y);
+  const double reach = top_of(probe);
   const geometry::Scene scene = scene_at(4.0 - 0.02 - reach);
   ASSERT_EQ(layout_violation(scene), "");
   // The premise: turned in place, the bench crosses the wall by more than
   // its 2 cm gap.
   geometry::Object turned = scene.objects[0];
   turned.pose.theta = -std::numbers::pi / 2;
-  double top = -1.0;
-  for (const Vec2& v : geometry::world_footprint(turned)) top = std::max(top, v.y);
-  ASSERT_GT(top, 4.0 + 0.02);
+  ASSERT_GT(top_of(turned), 4.0 + 0.02);
   CostModel model(scene, scene_sequences(scene));
   model.set_bounded_preferences(true);
   std::vector<Pose2> poses = poses_of(scene);
@@ -300,9 +304,7 @@ TEST(Polish, SquaresALongObjectThatItsTurnPushesThroughTheWall) {
   EXPECT_NEAR(poses[0].x, 2.0, 1e-9);
   geometry::Object bench = scene.objects[0];
   bench.pose = poses[0];
-  top = -1.0;
-  for (const Vec2& v : geometry::world_footprint(bench)) top = std::max(top, v.y);
-  EXPECT_NEAR(top, 4.0 - 0.02, 1e-9);
+  EXPECT_NEAR(top_of(bench), 4.0 - 0.02, 1e-9);
   EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
   EXPECT_EQ(violation_at(scratch, poses), "");
 }
