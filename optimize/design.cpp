@@ -290,6 +290,19 @@ class DesignRun {
     if (progress_) progress_(step);
   }
 
+  //! The hooks of an untoured arrangement: the design's validity, moves
+  //! that the C-space follows (so the covered-stop rule sees the
+  //! arrangement) and the annealer's preference moves.
+  ArrangeHooks arrange_hooks() {
+    ArrangeHooks hooks;
+    hooks.valid = valid_;
+    hooks.set = move_;
+    hooks.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
+      return preferred_move(p, o, rng);
+    };
+    return hooks;
+  }
+
   //! The opening arrangement (docs/optimize.md "Preferences", with
   //! PlannerConfig::prefer): before the tour annealing, the input layout is
   //! re-packed on the interior cost alone (arrange(), nothing planned), the
@@ -305,12 +318,7 @@ class DesignRun {
     o.tours_found_before = o.tours_found_after = current_terms_.tours_found;
     o.cost_before = o.cost_after = current_terms_.total();
     const auto t0 = Clock::now();
-    ArrangeHooks hooks;
-    hooks.valid = valid_;
-    hooks.set = move_;
-    hooks.preferred = [this](const std::vector<Pose2>& p, int k, std::mt19937_64& rng) {
-      return preferred_move(p, k, rng);
-    };
+    const ArrangeHooks hooks = arrange_hooks();
     ArrangeOptions options;
     options.iterations_per_object = per_object;
     options.extra = opening_pull(scene_, model_, movable_);
@@ -350,12 +358,7 @@ class DesignRun {
   //! The preference arrangement (optimize/arrange.h) of the best layout
   //! `poses` (placed; toured: `terms` and result_.tours).
   void arrange_best(std::vector<Pose2>& poses, CostTerms& terms) {
-    ArrangeHooks hooks;
-    hooks.valid = valid_;
-    hooks.set = move_;  // the C-space follows, so the covered-stop rule sees the arrangement
-    hooks.preferred = [this](const std::vector<Pose2>& p, int o, std::mt19937_64& rng) {
-      return preferred_move(p, o, rng);
-    };
+    const ArrangeHooks hooks = arrange_hooks();
     ToursHooks toured;
     toured.place = move_;
     toured.plan = [this](const std::vector<Pose2>& p) { return replan(p); };

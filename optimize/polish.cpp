@@ -215,6 +215,8 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     PreferenceReport report;
     GroupMove move;
   };
+  // Plannings of the rearrangement below, which has an allowance of its own.
+  int rearrange_tries = 0;
   const auto try_best = [&](std::vector<Candidate>& candidates, std::size_t tries,
                             bool no_costlier) {
     std::stable_sort(candidates.begin(), candidates.end(),
@@ -223,12 +225,158 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                        return polish_score(a.report) > polish_score(b.report);
                      });
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
-      if (out.tried >= max_tries || (stop && stop->load())) break;
+      if (out.tried - rearrange_tries >= max_tries || (stop && stop->load())) break;
       ++out.tried;
       const bool capped = no_costlier && gross_misses(candidates[k].report) >= gross_misses(report);
       if (try_moves(candidates[k].move, candidates[k].report, capped)) return true;
     }
     return false;
+  };
+  // Frees a place that would mend object i's preferences (an eviction).
+  // The places: its preferred poses, then its places along the walls,
+  // nearest first, the object alone or with a partner (below). A free one
+  // is a candidate as it is (the slides planned only the three
+  // best-scoring); one held by one or two movable objects (at most
+  // kEvictPlaces such) is a candidate with the holders moved away: to their
+  // own wall places or preferred poses, or to the place the object leaves
+  // (a second holder to the first of those that fits). A move of three
+  // that no exchange makes. For an object whose heading is grossly off
+  // (> 20°), a candidate mends a gross miss at a score no lower (a
+  // preference of a holder may be traded for the heading, as the score
+  // counts a gross miss twice), and is kept at any cost; for any other (the
+  // last pass, below), it raises the score and adds no gross miss, and is
+  // kept only at no higher total cost, as an exchange. The best four are
+  // planned, and the first kept ends it.
+  const auto evict = [&](std::size_t i) {
+    const int object = static_cast<int>(i);
+    const std::string& id = scene.objects[i].id;
+    const bool gross = grossly_off(report, id);
+    const auto mends = [&](const PreferenceReport& next) {
+      return gross ? gross_misses(next) < gross_misses(report)
+                   : polish_score(next) > polish_score(report) &&
+                         gross_misses(next) <= gross_misses(report);
+    };
+    const auto accept = [&](const PreferenceReport& next) {
+      return mends(next) && polish_score(next) >= polish_score(report);
+    };
+    std::vector<Candidate> evictions;
+    int places = 0;
+    std::vector<geometry::Pose2> targets = preferred_poses(scene, model, poses, object);
+    for (const geometry::Pose2& at : wall_slides(scene, model, poses, object, kWallSlideStep))
+      targets.push_back(at);
+    for (const geometry::Pose2& to : targets) {
+      if (places >= kEvictPlaces || (stop && stop->load())) break;
+      std::vector<geometry::Pose2> p = poses;
+      p[i] = to;
+      // The object alone, or with the first relation partner (ascending)
+      // at the first of its preferred poses that mends the miss with it
+      // (a desk moved to another wall with the chair that faces it).
+      GroupMove base{{object, to}};
+      if (!mends(check_preferences(scene, model, p))) {
+        for (const int f : partners(scene, object)) {
+          if (!movable[static_cast<std::size_t>(f)] || base.size() > 1) continue;
+          for (const geometry::Pose2& at : preferred_poses(scene, model, p, f)) {
+            std::vector<geometry::Pose2> pf = p;
+            pf[static_cast<std::size_t>(f)] = at;
+            if (mends(check_preferences(scene, model, pf))) {
+              base.push_back({f, at});
+              break;
+            }
+          }
+        }
+        if (base.size() == 1) {
+          // Or with its side of the relations: the movable partners other
+          // than those its gross misses are with, moved rigidly with it
+          // (a desk taken to the wardrobe's wall with the chair before
+          // it), so the relations between them still hold.
+          const std::vector<std::string> across = gross_others(report, id);
+          const double turn = geometry::wrap_angle(to.theta - poses[i].theta);
+          const double c = std::cos(turn), s = std::sin(turn);
+          std::vector<geometry::Pose2> ps = p;
+          GroupMove side{{object, to}};
+          for (const int f : partners(scene, object)) {
+            const geometry::Object& of = scene.objects[static_cast<std::size_t>(f)];
+            if (!movable[static_cast<std::size_t>(f)] ||
+                std::find(across.begin(), across.end(), of.id) != across.end())
+              continue;
+            const geometry::Pose2& was = poses[static_cast<std::size_t>(f)];
+            const double dx = was.x - poses[i].x, dy = was.y - poses[i].y;
+            const geometry::Pose2 at{to.x + c * dx - s * dy, to.y + s * dx + c * dy,
+                                     geometry::wrap_angle(was.theta + turn)};
+            ps[static_cast<std::size_t>(f)] = at;
+            side.push_back({f, at});
+          }
+          if (side.size() == 1 || !mends(check_preferences(scene, model, ps))) continue;
+          base = std::move(side);
+          p = std::move(ps);
+        } else {
+          p[static_cast<std::size_t>(base[1].first)] = base[1].second;
+        }
+      }
+      const auto fits = [&](const std::vector<geometry::Pose2>& q) {
+        return std::all_of(base.begin(), base.end(),
+                           [&](const auto& m) { return hooks.valid(q, m.first); });
+      };
+      const auto clear_all = [&](const GroupMove& m) {
+        return std::all_of(m.begin(), m.end(),
+                           [&](const auto& e) { return clear(e.first, e.second); });
+      };
+      if (hooks.valid(p, object)) {
+        if (!fits(p)) continue;
+        PreferenceReport next = check_preferences(scene, model, p);
+        if (accept(next)) evictions.push_back({clear_all(base), std::move(next), base});
+        continue;
+      }
+      const std::vector<int> held = holders(scene, p, object);
+      if (held.empty() || held.size() > 2 || std::any_of(held.begin(), held.end(), [&](int j) {
+            return !movable[static_cast<std::size_t>(j)] ||
+                   std::any_of(base.begin(), base.end(),
+                               [&](const auto& m) { return m.first == j; });
+          }))
+        continue;
+      ++places;
+      // Where holder j may go in layout q: its wall places, its preferred
+      // poses, and the object's old place (its own heading, or the
+      // object's).
+      const auto away = [&](const std::vector<geometry::Pose2>& q, int j) {
+        std::vector<geometry::Pose2> out_places = wall_slides(scene, model, q, j, kWallSlideStep);
+        for (const geometry::Pose2& at : preferred_poses(scene, model, q, j))
+          out_places.push_back(at);
+        const geometry::Pose2& was = poses[i];
+        out_places.push_back({was.x, was.y, q[static_cast<std::size_t>(j)].theta});
+        out_places.push_back(was);
+        return out_places;
+      };
+      const int j = held[0];
+      for (const geometry::Pose2& at : away(p, j)) {
+        std::vector<geometry::Pose2> q = p;
+        q[static_cast<std::size_t>(j)] = at;
+        if (!hooks.valid(q, j)) continue;
+        GroupMove move = base;
+        move.push_back({j, at});
+        if (held.size() == 2) {
+          // The second holder at its first place that fits.
+          const int k = held[1];
+          bool placed = false;
+          for (const geometry::Pose2& at_k : away(q, k)) {
+            q[static_cast<std::size_t>(k)] = at_k;
+            if (hooks.valid(q, k) && hooks.valid(q, j)) {
+              move.push_back({k, at_k});
+              placed = true;
+              break;
+            }
+          }
+          if (!placed) continue;
+        }
+        if (!fits(q)) continue;
+        PreferenceReport next = check_preferences(scene, model, q);
+        if (!accept(next)) continue;
+        evictions.push_back({clear_all(move), std::move(next), std::move(move)});
+      }
+    }
+    if (!try_best(evictions, kEvictTries, true)) return false;
+    ++out.kept, ++out.evicted;
+    return true;
   };
   // Two passes: a pose kept in the first can make a partner's pose meet its
   // relation in the second.
@@ -324,140 +472,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         ++out.kept, ++out.swapped;
         continue;
       }
+      // A heading still grossly off (> 20°): free a place that mends it.
       if (out.tried >= max_tries || (stop && stop->load()) || !grossly_off(report, id)) continue;
-      // A heading still grossly off (> 20°): the places that mend it (its
-      // preferred poses, then its places along the walls, nearest first;
-      // alone or with a partner, below). A free one is a candidate as it
-      // is (the slides above planned only the three best-scoring); one
-      // held by one or two movable objects
-      // (at most kEvictPlaces such) is a candidate with the holders moved
-      // away: to their own wall places or preferred poses, or to the place
-      // the object leaves (a second holder to the first of those that
-      // fits). A move of three that no exchange makes. Candidates mend a
-      // gross miss and score no lower (a preference of a holder may be
-      // traded for the heading, as the score counts a gross miss twice);
-      // they are kept at any cost when every tour is still found.
-      std::vector<Candidate> evictions;
-      int places = 0;
-      std::vector<geometry::Pose2> targets = preferred_poses(scene, model, poses, object);
-      for (const geometry::Pose2& at : wall_slides(scene, model, poses, object, kWallSlideStep))
-        targets.push_back(at);
-      for (const geometry::Pose2& to : targets) {
-        if (places >= kEvictPlaces || (stop && stop->load())) break;
-        std::vector<geometry::Pose2> p = poses;
-        p[i] = to;
-        // The object alone, or with the first relation partner (ascending)
-        // at the first of its preferred poses that mends the miss with it
-        // (a desk moved to another wall with the chair that faces it).
-        GroupMove base{{object, to}};
-        if (gross_misses(check_preferences(scene, model, p)) >= gross_misses(report)) {
-          for (const int f : partners(scene, object)) {
-            if (!movable[static_cast<std::size_t>(f)] || base.size() > 1) continue;
-            for (const geometry::Pose2& at : preferred_poses(scene, model, p, f)) {
-              std::vector<geometry::Pose2> pf = p;
-              pf[static_cast<std::size_t>(f)] = at;
-              if (gross_misses(check_preferences(scene, model, pf)) < gross_misses(report)) {
-                base.push_back({f, at});
-                break;
-              }
-            }
-          }
-          if (base.size() == 1) {
-            // Or with its side of the relations: the movable partners other
-            // than those its gross misses are with, moved rigidly with it
-            // (a desk taken to the wardrobe's wall with the chair before
-            // it), so the relations between them still hold.
-            const std::vector<std::string> across = gross_others(report, id);
-            const double turn = geometry::wrap_angle(to.theta - poses[i].theta);
-            const double c = std::cos(turn), s = std::sin(turn);
-            std::vector<geometry::Pose2> ps = p;
-            GroupMove side{{object, to}};
-            for (const int f : partners(scene, object)) {
-              const geometry::Object& of = scene.objects[static_cast<std::size_t>(f)];
-              if (!movable[static_cast<std::size_t>(f)] ||
-                  std::find(across.begin(), across.end(), of.id) != across.end())
-                continue;
-              const geometry::Pose2& was = poses[static_cast<std::size_t>(f)];
-              const double dx = was.x - poses[i].x, dy = was.y - poses[i].y;
-              const geometry::Pose2 at{to.x + c * dx - s * dy, to.y + s * dx + c * dy,
-                                       geometry::wrap_angle(was.theta + turn)};
-              ps[static_cast<std::size_t>(f)] = at;
-              side.push_back({f, at});
-            }
-            if (side.size() == 1 ||
-                gross_misses(check_preferences(scene, model, ps)) >= gross_misses(report))
-              continue;
-            base = std::move(side);
-            p = std::move(ps);
-          } else {
-            p[static_cast<std::size_t>(base[1].first)] = base[1].second;
-          }
-        }
-        const auto fits = [&](const std::vector<geometry::Pose2>& q) {
-          return std::all_of(base.begin(), base.end(),
-                             [&](const auto& m) { return hooks.valid(q, m.first); });
-        };
-        const auto clear_all = [&](const GroupMove& m) {
-          return std::all_of(m.begin(), m.end(),
-                             [&](const auto& e) { return clear(e.first, e.second); });
-        };
-        if (hooks.valid(p, object)) {
-          if (!fits(p)) continue;
-          PreferenceReport next = check_preferences(scene, model, p);
-          if (polish_score(next) >= polish_score(report))
-            evictions.push_back({clear_all(base), std::move(next), base});
-          continue;
-        }
-        const std::vector<int> held = holders(scene, p, object);
-        if (held.empty() || held.size() > 2 || std::any_of(held.begin(), held.end(), [&](int j) {
-              return !movable[static_cast<std::size_t>(j)] ||
-                     std::any_of(base.begin(), base.end(),
-                                 [&](const auto& m) { return m.first == j; });
-            }))
-          continue;
-        ++places;
-        // Where holder j may go in layout q: its wall places, its preferred
-        // poses, and the object's old place (its own heading, or the
-        // object's).
-        const auto away = [&](const std::vector<geometry::Pose2>& q, int j) {
-          std::vector<geometry::Pose2> out_places = wall_slides(scene, model, q, j, kWallSlideStep);
-          for (const geometry::Pose2& at : preferred_poses(scene, model, q, j))
-            out_places.push_back(at);
-          const geometry::Pose2& was = poses[i];
-          out_places.push_back({was.x, was.y, q[static_cast<std::size_t>(j)].theta});
-          out_places.push_back(was);
-          return out_places;
-        };
-        const int j = held[0];
-        for (const geometry::Pose2& at : away(p, j)) {
-          std::vector<geometry::Pose2> q = p;
-          q[static_cast<std::size_t>(j)] = at;
-          if (!hooks.valid(q, j)) continue;
-          GroupMove move = base;
-          move.push_back({j, at});
-          if (held.size() == 2) {
-            // The second holder at its first place that fits.
-            const int k = held[1];
-            bool placed = false;
-            for (const geometry::Pose2& at_k : away(q, k)) {
-              q[static_cast<std::size_t>(k)] = at_k;
-              if (hooks.valid(q, k) && hooks.valid(q, j)) {
-                move.push_back({k, at_k});
-                placed = true;
-                break;
-              }
-            }
-            if (!placed) continue;
-          }
-          if (!fits(q)) continue;
-          PreferenceReport next = check_preferences(scene, model, q);
-          if (polish_score(next) < polish_score(report) ||
-              gross_misses(next) >= gross_misses(report))
-            continue;
-          evictions.push_back({clear_all(move), std::move(next), std::move(move)});
-        }
-      }
-      if (try_best(evictions, kEvictTries, true)) ++out.kept, ++out.evicted;
+      evict(i);
     }
   }
   // Groups linked by relation angles turn as one body (a bed, the TV that
@@ -501,7 +518,6 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // tours are likelier kept near the layout that found them. Each chain's
   // best layout with fewer gross misses and a score no lower is planned,
   // best first, and kept at any cost when every tour is still found.
-  int rearrange_tries = 0;
   if (gross_misses(report) > 0 && !(stop && stop->load())) {
     RearrangeHooks rh;
     rh.fits = hooks.fits ? hooks.fits : hooks.valid;
@@ -586,8 +602,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       }
       return std::nullopt;
     };
-    const auto budget_left = [&] {
-      return out.tried - rearrange_tries < max_tries && !(stop && stop->load());
+    // Whether `n` more plannings fit in the budget.
+    const auto budget_left = [&](int n = 1) {
+      return out.tried - rearrange_tries + n <= max_tries && !(stop && stop->load());
     };
     if (auto c = candidate(squares.front())) {
       ++out.tried;
@@ -600,10 +617,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     // keep), and the cheapest whose tours are all found is kept; when its
     // second plan loses a tour, the next cheapest is tried.
     std::vector<std::pair<double, std::pair<geometry::Pose2, PreferenceReport>>> found;
-    const auto two_left = [&] {
-      return out.tried - rearrange_tries + 1 < max_tries && !(stop && stop->load());
-    };
-    for (std::size_t k = 1; k < squares.size() && two_left(); ++k) {
+    for (std::size_t k = 1; k < squares.size() && budget_left(2); ++k) {
       auto c = candidate(squares[k]);
       if (!c) continue;
       ++out.tried;
@@ -625,6 +639,21 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         break;
       }
     }
+  }
+  // Last, with the plannings left: each object with a preference still
+  // unmet and no angle grossly off has a place that would meet more freed
+  // (evict(): a sofa moved to the wall where it stands at its distance from
+  // the TV, the cabinet that holds that wall moved to the place the sofa
+  // leaves), kept when every tour is still found at no higher total cost.
+  // It runs after every other step, so that those find the layout and the
+  // budget they had without it.
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    if (!movable[i] || out.tried - rearrange_tries >= max_tries || (stop && stop->load())) continue;
+    const std::string& id = scene.objects[i].id;
+    const bool unmet = std::any_of(report.checks.begin(), report.checks.end(), [&](const PreferenceCheck& c) {
+      return !c.met && (c.object == id || c.other == id);
+    });
+    if (unmet && !grossly_off(report, id)) evict(i);
   }
   return out;
 }

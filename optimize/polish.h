@@ -38,11 +38,15 @@
 // per chain, not counted against `max_tries`) and the first that keeps
 // every tour is kept at any cost. An eviction can also take the object's other relation
 // partners along, moved rigidly with it.
-// Last, each movable object whose heading no preference fixes is turned
+// Then each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered),
 // at any cost: turned in place, or slid along the wall's normal to keep
 // its gap to the wall; when the nearest square heading fits neither way,
 // the cheapest of the other three that keeps every tour.
+// Last, with the plannings left, each object with a preference still unmet
+// and no angle grossly off has the places that would meet more freed, as
+// in an eviction (the score must rise, with no new gross miss), kept only
+// at no higher total cost.
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order) and the chains are seeded (PolishHooks::seed), so the result is a
 // function of the layout and the seeds, whatever the thread count.

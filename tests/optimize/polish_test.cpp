@@ -319,7 +319,7 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
 
 // The same room, but the planner stands in for one whose tours through the
 // exchanged desks are longer: the exchange meets the relation, but costs
-// more, so it is not kept.
+// more, so it is not kept, and neither is the last pass's eviction.
 TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
   const geometry::Scene scene = desks_scene();
   CostModel model(scene, scene_sequences(scene));
@@ -343,10 +343,13 @@ TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
   const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
   // `far` has no wall to slide along and its pose toward the lamp overlaps
   // `near`: the two exchanges with `near` (back to back and reference
-  // points, the same here) are all that is planned, once per pass.
-  EXPECT_EQ(planned, 4);
-  EXPECT_EQ(r.tried, 4);
+  // points, the same here) are planned once per pass; then the last pass
+  // plans two evictions of `near` from that pose, refused at the higher
+  // cost too.
+  EXPECT_EQ(planned, 6);
+  EXPECT_EQ(r.tried, 6);
   EXPECT_EQ(r.swapped, 0);
+  EXPECT_EQ(r.evicted, 0);
   EXPECT_EQ(poses, input);
 }
 
@@ -446,6 +449,93 @@ TEST(Polish, KeepsAnEvictionAtAHigherCostButNotAtALostTour) {
       EXPECT_EQ(terms.path_length, 5.0);
       EXPECT_EQ(check_preferences(scene, model, poses).met, 2);
     }
+  }
+}
+
+//! The room of the final pass's test below: a sofa on the top wall wants
+//! 4.4 m from a fixed TV on the left wall (relation distance, no angle),
+//! which only a place on the right wall meets; a movable cabinet, 3 m long,
+//! holds the right wall and the top wall's right end.
+geometry::Scene held_wall_scene() {
+  return geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "held wall",
+    "room": {"size": [5, 4]},
+    "door": {"center": [2.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "tv", "size": [0.4, 1.2], "pose": [0.2, 2.0, 0], "fixed": true},
+      {"id": "sofa", "size": [0.8, 1.6], "pose": [2.5, 3.6, -1.5707963267948966],
+       "wall": {"distance": 0, "angle": 0}},
+      {"id": "cabinet", "size": [0.6, 3.0], "pose": [4.7, 2.0, 3.141592653589793]}
+    ],
+    "relations": [{"a": "sofa", "b": "tv", "distance": 4.4}],
+    "activity": {"transitions": {"door": {"sofa": 1.0}, "sofa": {"cabinet": 1.0},
+                                 "cabinet": {"sofa": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "held wall");
+}
+
+// The sofa's relation distance is its only miss, and no angle is off. Its
+// wall places that meet it are held by the cabinet. The planner stands in
+// for one whose tours are shorter only with the cabinet at the place the
+// sofa leaves, facing as the sofa did (the eviction's layout), and longer
+// anywhere else: the exchange of the two (the cabinet's back edge where
+// the sofa's was) meets the relation but costs more, so it is refused, and
+// the last pass frees the place instead and keeps it. When every layout
+// costs more, or one loses a tour, nothing is kept.
+TEST(Polish, LastPassFreesAHeldPlaceForAMissThatIsNotAnAngle) {
+  const geometry::Scene scene = held_wall_scene();
+  ASSERT_EQ(layout_violation(scene), "");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable = movable_of(scene);
+  {
+    const PreferenceReport before = check_preferences(scene, model, poses_of(scene));
+    ASSERT_EQ(before.total, 3);
+    ASSERT_EQ(before.met, 2);
+    ASSERT_EQ(polish_gross(before), 0);
+  }
+  const Pose2 sofa_was = poses_of(scene)[1];
+  enum class Planner { kEvictionCheaper, kAllCostlier, kLosesATour };
+  for (const Planner planner :
+       {Planner::kEvictionCheaper, Planner::kAllCostlier, Planner::kLosesATour}) {
+    std::vector<Pose2> poses = poses_of(scene);
+    const std::vector<Pose2> input = poses;
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    int planned = 0, cheaper = 0;
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      ++planned;
+      CostTerms t = two_tours_found();
+      const bool evicted = p[2] == sofa_was;
+      t.path_length = planner == Planner::kEvictionCheaper && evicted ? 0.5 : 5.0;
+      cheaper += t.path_length < 1.0;
+      if (planner == Planner::kLosesATour) t.tours_found = 1;
+      return t;
+    };
+    CostTerms terms = two_tours_found();
+    terms.path_length = 1.0;
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+    EXPECT_EQ(r.tried, planned);
+    EXPECT_EQ(r.swapped, 0);
+    if (planner != Planner::kEvictionCheaper) {
+      EXPECT_GE(planned, 1);  // the exchange, at least, was planned and refused
+      EXPECT_EQ(r.kept, 0);
+      EXPECT_EQ(poses, input);
+      EXPECT_EQ(terms.path_length, 1.0);
+      continue;
+    }
+    EXPECT_EQ(cheaper, 1);
+    EXPECT_EQ(r.evicted, 1);
+    EXPECT_EQ(r.kept, 1);
+    EXPECT_EQ(terms.path_length, 0.5);
+    EXPECT_EQ(check_preferences(scene, model, poses).met, 3);
+    // The sofa against the right wall, facing the TV; the cabinet where
+    // the sofa stood.
+    EXPECT_NEAR(poses[1].x, 4.6, 1e-9);
+    EXPECT_NEAR(std::abs(geometry::wrap_angle(poses[1].theta)), std::numbers::pi, 1e-9);
+    EXPECT_EQ(poses[2], sofa_was);
+    EXPECT_EQ(violation_at(scratch, poses), "");
   }
 }
 
