@@ -16,6 +16,7 @@
 #include "optimize/design.h"
 #include "optimize/polish.h"
 #include "optimize/preferences.h"
+#include "optimize/sequences.h"
 
 namespace hrs::optimize::testing {
 
@@ -59,6 +60,14 @@ inline int gross_count(const PreferenceReport& r) {
   return n;
 }
 inline int score_of(const PreferenceReport& r) { return r.met - gross_count(r); }
+
+//! The cost model of `scene` and its sequences with bounded preference
+//! terms (the default preset's objective).
+inline CostModel bounded_model(const geometry::Scene& scene) {
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  return model;
+}
 
 //! Terms with both of two tours found (a plan() that never loses a tour).
 inline CostTerms two_tours_found() {

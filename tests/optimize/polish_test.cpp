@@ -32,6 +32,7 @@ namespace {
 using geometry::Pose2;
 using geometry::Vec2;
 
+using testing::bounded_model;
 using testing::exact_hooks;
 using testing::movable_of;
 using testing::poses_of;
@@ -55,8 +56,7 @@ TEST(PolishSweep, KeepsOnlyHigherScoringLayoutsThatLoseNoTour) {
   for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
     const geometry::Scene scene =
         geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
-    CostModel model(scene, scene_sequences(scene));
-    model.set_bounded_preferences(true);
+    const CostModel model = bounded_model(scene);
     const std::vector<bool> movable = movable_of(scene);
     for (std::uint64_t seed = 1; seed <= 100; ++seed) {
       const geometry::Scene work = testing::scrambled(scene, movable, seed);
@@ -148,8 +148,7 @@ TEST(Polish, TurnsAGroupLinkedByRelationAnglesAsOneBody) {
     "activity": {"transitions": {"door": {"a": 1.0}, "a": {"c": 1.0}, "c": {"a": 1.0}},
                  "sequences": 2, "visits": 2}
   })", "benches");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable{true, true, true, false};
   std::vector<Pose2> poses = poses_of(scene);
   const PreferenceReport before = check_preferences(scene, model, poses);
@@ -220,8 +219,7 @@ TEST(Polish, AnObjectThatNoLongerFitsOnceTurnedIsNudged) {
     "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"lamp": 1.0}, "lamp": {"bench": 1.0}},
                  "sequences": 2, "visits": 2}
   })", "bench");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable{true, false};
   std::vector<Pose2> poses = poses_of(scene);
   ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
@@ -269,8 +267,7 @@ TEST(Polish, TurnsInPlaceWhereNoSpotAtItsWallIsFree) {
                  "sequences": 2, "visits": 2}
   })", "lined");
   ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable{true, false, false, false, false};
   std::vector<Pose2> poses = poses_of(scene);
   const PreferenceReport before = check_preferences(scene, model, poses);
@@ -299,8 +296,7 @@ TEST(Polish, TurnsInPlaceWhereNoSpotAtItsWallIsFree) {
 // `far` stood.
 TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
   const geometry::Scene scene = desks_scene();
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable{false, true, true};
   std::vector<Pose2> poses = poses_of(scene);
   ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
@@ -322,8 +318,7 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
 // more, so it is not kept, and neither is the last pass's eviction.
 TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
   const geometry::Scene scene = desks_scene();
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable{false, true, true};
   std::vector<Pose2> poses = poses_of(scene);
   const std::vector<Pose2> input = poses;
@@ -386,8 +381,7 @@ geometry::Scene gap_scene() {
 TEST(Polish, EvictsTheHolderOfThePlaceThatMendsAGrossAngleMiss) {
   const geometry::Scene scene = gap_scene();
   ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
   std::vector<Pose2> poses = poses_of(scene);
   const PreferenceReport before = check_preferences(scene, model, poses);
@@ -423,8 +417,7 @@ TEST(Polish, EvictsTheHolderOfThePlaceThatMendsAGrossAngleMiss) {
 // A planner that loses a tour has it refused.
 TEST(Polish, KeepsAnEvictionAtAHigherCostButNotAtALostTour) {
   const geometry::Scene scene = gap_scene();
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
   for (const bool lose : {false, true}) {
     std::vector<Pose2> poses = poses_of(scene);
@@ -486,8 +479,7 @@ geometry::Scene held_wall_scene() {
 TEST(Polish, LastPassFreesAHeldPlaceForAMissThatIsNotAnAngle) {
   const geometry::Scene scene = held_wall_scene();
   ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
   {
     const PreferenceReport before = check_preferences(scene, model, poses_of(scene));
@@ -566,8 +558,7 @@ TEST(Polish, EvictionTakesTheObjectsSideOfItsRelationsAlong) {
                  "sequences": 2, "visits": 2}
   })", "desk side");
   ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
   std::vector<Pose2> poses = poses_of(scene);
   const PreferenceReport before = check_preferences(scene, model, poses);
@@ -643,8 +634,7 @@ geometry::Scene shared_wall_scene() {
 TEST(PolishSweep, RearrangesSeveralObjectsWhenNoSingleMoveMendsAGrossAngleMiss) {
   const geometry::Scene scene = shared_wall_scene();
   ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
   std::vector<Pose2> poses = poses_of(scene);
   const PreferenceReport before = check_preferences(scene, model, poses);
@@ -692,8 +682,7 @@ TEST(PolishSweep, RearrangesSeveralObjectsWhenNoSingleMoveMendsAGrossAngleMiss) 
 // the rearrangements are planned (one per chain at most) and refused.
 TEST(Polish, KeepsNoRearrangementThatLosesATour) {
   const geometry::Scene scene = shared_wall_scene();
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
   std::vector<Pose2> poses = poses_of(scene);
   const std::vector<Pose2> input = poses;
