@@ -225,7 +225,9 @@ TEST(Accessibility, TShapedSpaceJustAboveAndBelowTheRule) {
     EXPECT_TRUE(a.turning.t_fits) << rot;
     EXPECT_TRUE(a.turning.t_complete) << rot;
     EXPECT_TRUE(a.turning.fits) << rot;
-    if (a.turning.t_fits) EXPECT_EQ(expect_t_free(fit, a, rng), 3000);
+    if (a.turning.t_fits) {
+      EXPECT_EQ(expect_t_free(fit, a, rng), 3000);
+    }
     const json doc = json::parse(hrs::access::report_json(a));
     EXPECT_TRUE(doc["turning_space"]["pass"].get<bool>());
     EXPECT_FALSE(doc["turning_space"]["circle_pass"].get<bool>());

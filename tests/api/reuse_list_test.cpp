@@ -68,8 +68,12 @@ TEST(ReuseList, NamesRoundTripOnRandomSwitchSets) {
     if (o.backoff) o.backoff_floor = 1 + static_cast<int>(rng() % 1'000'000);
     const ReuseOptions back = parse_reuse(o.names());
     for (const auto& t : techniques) ASSERT_EQ(back.*t.on, o.*t.on) << o.names();
-    if (o.budget) ASSERT_EQ(back.budget_iterations, o.budget_iterations) << o.names();
-    if (o.backoff) ASSERT_EQ(back.backoff_floor, o.backoff_floor) << o.names();
+    if (o.budget) {
+      ASSERT_EQ(back.budget_iterations, o.budget_iterations) << o.names();
+    }
+    if (o.backoff) {
+      ASSERT_EQ(back.backoff_floor, o.backoff_floor) << o.names();
+    }
     // Reversed order, each name preceded by its own -name: the same switches.
     std::string reversed;
     for (auto t = techniques.rbegin(); t != techniques.rend(); ++t) {

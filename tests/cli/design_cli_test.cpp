@@ -129,8 +129,9 @@ TEST(DesignCli, FaultsLoseNoData_SigtermAndSighupWriteTheBestDesign) {
     ASSERT_TRUE(in.good()) << sig;
     EXPECT_TRUE(nlohmann::json::parse(in)["stopped"].get<bool>());
     for (const auto& e : fs::directory_iterator(out))  // no temporary left behind
-      if (e.path().filename() != ".hrspace.lock")     // (the lock file stays, unlocked)
+      if (e.path().filename() != ".hrspace.lock") {  // (the lock file stays, unlocked)
         EXPECT_NE(e.path().filename().string().front(), '.') << e.path();
+      }
   }
 }
 

@@ -579,7 +579,9 @@ TEST(Identity, EveryRunOfTheShippedStudiesDigestsTheScenesItReads) {
       const Row id = run_identity(s, r, config);
       for (const std::string& c : sweep_columns()) EXPECT_TRUE(id.get(c)) << r.key << " " << c;
       EXPECT_TRUE(id.get("scene_digest")) << r.key;
-      if (r.params.get("planner")) EXPECT_TRUE(id.get("planner_config")) << r.key;
+      if (r.params.get("planner")) {
+        EXPECT_TRUE(id.get("planner_config")) << r.key;
+      }
     }
   }
   // Scene names are looked up in --scenes: a directory without them is an

@@ -260,7 +260,9 @@ std::size_t expect_masks_match(const FreeGrid& g, const std::string& what) {
   const int n = g.slices();
   for (std::size_t c = 0; c < columns; ++c) {
     const std::uint64_t m = g.free_slices(c);
-    if (n < 64) EXPECT_EQ(m >> n, 0u) << what << ": column " << c << " has bits past the ring";
+    if (n < 64) {
+      EXPECT_EQ(m >> n, 0u) << what << ": column " << c << " has bits past the ring";
+    }
     for (int k = 0; k < n; ++k) {
       const bool free_bit = (m >> k) & 1;
       if (free_bit == g.blocked(c * n + k)) {

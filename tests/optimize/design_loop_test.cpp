@@ -98,7 +98,9 @@ int expect_early_counters(const DesignResult& r, const std::string& what) {
   }
   EXPECT_EQ(r.early.proposals, early) << what;
   EXPECT_LE(r.early.proposals, r.valid_proposals) << what;
-  if (early == 0) EXPECT_EQ(r.early.tours_skipped, 0) << what;
+  if (early == 0) {
+    EXPECT_EQ(r.early.tours_skipped, 0) << what;
+  }
   return early;
 }
 
@@ -125,7 +127,9 @@ TEST(DesignLoop, EarlyRejectionMakesTheSameDecisionsAsFullEvaluation) {
         const TraceEntry& e = r[1].trace[i].anneal;
         const TraceEntry& full = r[0].trace[i].anneal;
         if (!r[1].trace[i].rejected_early) {
-          if (e.valid) EXPECT_EQ(e.proposed_cost, full.proposed_cost) << what << " step " << i;
+          if (e.valid) {
+            EXPECT_EQ(e.proposed_cost, full.proposed_cost) << what << " step " << i;
+          }
           continue;
         }
         EXPECT_LE(e.proposed_cost, full.proposed_cost + 1e-9 * std::max(1.0, full.proposed_cost))
@@ -291,7 +295,9 @@ TEST(DesignLoop, TheNearestWallsOfTheDoorsRegionAreFocused) {
     std::printf("%s seed 1: tours %d/%d -> %d/%d\n", room, r.initial.tours_found,
                 r.initial.tours_total, r.final.tours_found, r.final.tours_total);
     EXPECT_EQ(r.initial.tours_found, 0) << room;
-    if (std::string(room) == "zoo_1_408.json") EXPECT_LE(r.unblock.walled_after, 1);
+    if (std::string(room) == "zoo_1_408.json") {
+      EXPECT_LE(r.unblock.walled_after, 1);
+    }
     EXPECT_TRUE(r.valid) << room;
     EXPECT_GE(r.final.tours_found, 9) << room;
     EXPECT_TRUE(layout_violation(r.layout).empty()) << room << ": " << layout_violation(r.layout);
@@ -460,8 +466,12 @@ TEST(DesignLoop, RescueFindsToursACrippledRrtMissesAndLosesNone) {
       ++runs;
       EXPECT_FALSE(without.rescue.ran) << what;
       // The lattice runs when the final layout still misses tours, and only then.
-      if (!with.rescue.ran) EXPECT_EQ(with.final.tours_found, with.final.tours_total) << what;
-      if (with.rescue.ran) EXPECT_GT(with.rescue.tours_unfound, 0) << what;
+      if (!with.rescue.ran) {
+        EXPECT_EQ(with.final.tours_found, with.final.tours_total) << what;
+      }
+      if (with.rescue.ran) {
+        EXPECT_GT(with.rescue.tours_unfound, 0) << what;
+      }
       // The annealing is the same in both runs; the first unblocking runs on
       // its best layout, before the arrangement (which saw it in `without`).
       const int best_found = without.arrange.tours_found_before;
@@ -486,9 +496,10 @@ TEST(DesignLoop, RescueFindsToursACrippledRrtMissesAndLosesNone) {
           const auto& leg = t.legs[i];
           EXPECT_LE(geometry::pose_gap(rs::end_pose(leg.from, leg.path), leg.to), 1e-6)
               << what << ": leg " << i << " does not end at its goal";
-          if (i + 1 < t.legs.size())
+          if (i + 1 < t.legs.size()) {
             EXPECT_LE(geometry::pose_gap(leg.to, t.legs[i + 1].from), 1e-9)
                 << what << ": legs " << i << " and " << i + 1 << " do not join";
+          }
           for (const geometry::Pose2& q : rs::sample(leg.from, leg.path, 0.02))
             ASSERT_TRUE(cspace.is_free(q)) << what << ": a rescued tour collides";
         }

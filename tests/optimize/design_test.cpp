@@ -303,7 +303,9 @@ TEST(Design, InvalidStartingLayoutIsSeparatedOrReportedInvalid) {
   options.planner.escape = false;
   const auto plain = design(scene, options);
   EXPECT_EQ(plain.unblock.separated, 0);
-  if (!plain.valid) EXPECT_NE(layout_violation(plain.layout), "");
+  if (!plain.valid) {
+    EXPECT_NE(layout_violation(plain.layout), "");
+  }
 }
 
 TEST(Design, CrowdedInvalidLayoutIsSeparatedByDisplacingSmallerObjects) {
