@@ -103,6 +103,16 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     o.pose = to;
     return corridor->clear(geometry::world_footprint(o));
   };
+  // Keeps the placed and planned layout `q` (terms `t`, preference report
+  // `met`).
+  const auto keep_planned = [&](std::vector<geometry::Pose2> q, const CostTerms& t,
+                                PreferenceReport& met) {
+    poses = std::move(q);
+    terms = t;
+    report = std::move(met);
+    hooks.kept();
+    if (corridor) corridor.emplace(scene.wheelchair, hooks.tours());
+  };
   // Places `moves`, plans, and keeps them when every tour found before is
   // still found, and with `no_costlier` the total cost is not higher (`met`
   // is the preference report of the moved layout); else puts the objects
@@ -116,11 +126,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     }
     const CostTerms t = hooks.plan(q);
     if (t.tours_found >= terms.tours_found && (!no_costlier || t.total() <= terms.total())) {
-      poses = std::move(q);
-      terms = t;
-      report = std::move(met);
-      hooks.kept();
-      if (corridor) corridor.emplace(scene.wheelchair, hooks.tours());
+      keep_planned(std::move(q), t, met);
       return true;
     }
     for (auto it = moves.rbegin(); it != moves.rend(); ++it)
@@ -544,11 +550,13 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // turned in place, then, where that is not valid or loses a preference
   // (turned about its centre, the object's reach towards the wall changes:
   // a lamp 5 cm from its wall, as wanted, ends 11 cm from it), slid along the
-  // wall's normal to keep the object's gap to the wall. The
-  // nearest square heading is planned first; when none of its poses is
-  // valid, the other three are planned and the cheapest kept (a quarter or
-  // half turn moves the object's front, where the wheelchair stops: in the
-  // shipped bedroom the three cost 17.5 to 18.8 against 14.9 tilted).
+  // wall's normal to keep the object's gap to the wall. The square headings
+  // are planned nearest first, and the first that costs no more is kept;
+  // when each costs more, the cheapest is (a quarter or half turn moves the
+  // object's front, where the wheelchair stops: in the shipped bedroom the
+  // three cost 17.5 to 18.8 against 14.9 tilted, and three squarings to
+  // the nearest heading took zoo room 202's design from 8.0 to 31.4;
+  // docs/BENCHMARKS.md, 2026-11-30).
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const int object = static_cast<int>(i);
     if (!movable[i] || heading_fixed(scene, object) || out.tried - rearrange_tries >= max_tries ||
@@ -606,18 +614,16 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     const auto budget_left = [&](int n = 1) {
       return out.tried - rearrange_tries + n <= max_tries && !(stop && stop->load());
     };
-    if (auto c = candidate(squares.front())) {
-      ++out.tried;
-      if (try_moves({{object, c->first}}, c->second)) ++out.squared;
-      continue;
-    }
-    // The nearest square heading does not fit (a lamp in a corner whose
-    // front would face a dresser covers a stop): each other one that does
-    // is planned while two plannings are left (one to evaluate, one to
-    // keep), and the cheapest whose tours are all found is kept; when its
-    // second plan loses a tour, the next cheapest is tried.
+    // The square headings, nearest first, each planned while two plannings
+    // are left (one to evaluate, one to keep): the first whose tours are all
+    // found at no higher total cost is kept as planned. When every one costs
+    // more, the cheapest whose tours are all found is planned again and kept
+    // (a lamp's quarter turn moves its front, where the wheelchair stops: the
+    // nearest heading can cost several times the others); when that second
+    // plan loses a tour, the next cheapest is tried.
     std::vector<std::pair<double, std::pair<geometry::Pose2, PreferenceReport>>> found;
-    for (std::size_t k = 1; k < squares.size() && budget_left(2); ++k) {
+    bool kept = false;
+    for (std::size_t k = 0; k < squares.size() && !kept && budget_left(2); ++k) {
       auto c = candidate(squares[k]);
       if (!c) continue;
       ++out.tried;
@@ -625,9 +631,16 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       q[i] = c->first;
       hooks.place(object, c->first);
       const CostTerms t = hooks.plan(q);
+      if (t.tours_found >= terms.tours_found && t.total() <= terms.total()) {
+        keep_planned(std::move(q), t, c->second);
+        kept = true;
+        ++out.squared;
+        break;
+      }
       hooks.place(object, poses[i]);
       if (t.tours_found >= terms.tours_found) found.emplace_back(t.total(), std::move(*c));
     }
+    if (kept) continue;
     // Cheapest first; equal costs keep the order planned.
     std::stable_sort(found.begin(), found.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });

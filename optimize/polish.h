@@ -39,10 +39,10 @@
 // every tour is kept at any cost. An eviction can also take the object's other relation
 // partners along, moved rigidly with it.
 // Then each movable object whose heading no preference fixes is turned
-// square to its nearest wall, on the same conditions (score not lowered),
-// at any cost: turned in place, or slid along the wall's normal to keep
-// its gap to the wall; when the nearest square heading fits neither way,
-// the cheapest of the other three that keeps every tour.
+// square to its nearest wall, on the same conditions (score not lowered):
+// turned in place, or slid along the wall's normal to keep its gap to the
+// wall; of the square headings that keep every tour, nearest first, the
+// first that costs no more, else the cheapest, at any cost.
 // Last, with the plannings left, each object with a preference still unmet
 // and no angle grossly off has the places that would meet more freed, as
 // in an eviction (the score must rise, with no new gross miss), kept only

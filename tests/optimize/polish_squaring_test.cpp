@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The polish's last stage, squaring (optimize/polish.h): an object whose
 // heading no preference fixes is turned square to its nearest wall, slid
-// to keep its reach towards the wall, and turned to the cheapest other
-// square heading when the nearest does not fit (the next cheapest when the
-// cheapest, planned again, loses a tour), within the planning budget. Built rooms with the exact layout
+// to keep its reach towards the wall: the first square heading (nearest
+// first) whose tours cost no more is kept as planned, else the cheapest
+// (the next cheapest when the cheapest, planned again, loses a tour),
+// within the planning budget. Built rooms with the exact layout
 // checks and stand-in planners (part of optimize_polish_test).
 
 #include <gtest/gtest.h>
@@ -223,9 +224,9 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
     EXPECT_NEAR(terms.path_length, cost(dearer), 1e-12) << phase;
   }
 
-  // The budget: with two plannings left, one heading is evaluated and kept
-  // (the old order evaluated two and had none left to keep either); with
-  // one left, none is evaluated.
+  // The budget: with two plannings left, one heading is planned, and kept
+  // as planned since it costs no more; with one left, none is planned (a
+  // heading that costs more would need a second plan to be kept).
   for (const int budget : {1, 2}) {
     std::vector<Pose2> poses = poses_of(scene);
     geometry::Scene scratch = scene;
@@ -243,11 +244,78 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
       EXPECT_EQ(poses, poses_of(scene));
       continue;
     }
-    ASSERT_EQ(planned.size(), 2u);
-    EXPECT_NEAR(geometry::wrap_angle(planned[1] - planned[0]), 0.0, 1e-12);
+    ASSERT_EQ(planned.size(), 1u);
     EXPECT_FALSE(along(planned[0], refused));
     EXPECT_EQ(r.squared, 1);
     EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - planned[0]), 0.0, 1e-12);
+  }
+}
+
+// The same bench, every square heading valid. The square headings are
+// planned nearest first, and the first whose tours are all found at no
+// higher total cost is kept as it was planned (no second plan), even when
+// a later one would be cheaper; the headings that cost more are put back.
+// When the nearest costs no more, it is the one planning. A planner that
+// answers by the order of its calls (not by heading) tells them apart.
+TEST(Polish, SquaresToTheFirstHeadingThatCostsNoMore) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "bench",
+    "room": {"size": [5, 4]},
+    "door": {"center": [2.5, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "bench", "size": [1.2, 0.4], "pose": [2.5, 2.2, 0.4363323129985824]},
+      {"id": "box", "size": [0.5, 0.5], "pose": [4.5, 1.5, 0], "fixed": true}
+    ],
+    "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"box": 1.0}, "box": {"bench": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "bench");
+  ASSERT_EQ(layout_violation(scene), "");
+  CostModel model(scene, scene_sequences(scene));
+  model.set_bounded_preferences(true);
+  const std::vector<bool> movable = movable_of(scene);
+  const double normal = model.wall_normal_angle(model.nearest_wall(0, scene.objects[0].pose));
+  const double off = geometry::wrap_angle(scene.objects[0].pose.theta - normal);
+  const double quarter = std::numbers::pi / 2;
+  const double nearest = geometry::wrap_angle(normal + std::round(off / quarter) * quarter);
+  struct Case {
+    std::vector<double> costs;  // the planner's path length at its k-th call
+    std::size_t kept;           // the call whose heading is kept
+  };
+  // The current layout's path length is 3.
+  for (const Case& c : {Case{{3.5, 3.2, 2.9, 2.5}, 2}, Case{{3.0, 2.0, 2.0, 2.0}, 0},
+                        Case{{3.5, 3.0, 2.0, 2.0}, 1}}) {
+    const std::string what = "kept call " + std::to_string(c.kept);
+    std::vector<Pose2> poses = poses_of(scene);
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    std::vector<double> planned;
+    std::vector<Pose2> placed = poses;  // the layout the hooks were last told
+    const auto place = hooks.place;
+    hooks.place = [&](int object, const Pose2& to) {
+      placed[static_cast<std::size_t>(object)] = to;
+      place(object, to);
+    };
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      EXPECT_EQ(p, placed) << what << ": planned a layout other than the placed one";
+      CostTerms t = two_tours_found();
+      t.path_length = c.costs.at(planned.size());
+      planned.push_back(p[0].theta);
+      return t;
+    };
+    CostTerms terms = two_tours_found();
+    terms.path_length = 3.0;
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+    ASSERT_EQ(planned.size(), c.kept + 1) << what;
+    EXPECT_NEAR(geometry::wrap_angle(planned[0] - nearest), 0.0, 1e-9) << what;
+    for (std::size_t k = 1; k < planned.size(); ++k)
+      EXPECT_GT(std::abs(geometry::wrap_angle(planned[k] - planned[0])), 1.0) << what;
+    EXPECT_EQ(r.squared, 1) << what;
+    EXPECT_EQ(r.tried, static_cast<int>(c.kept) + 1) << what;
+    EXPECT_NEAR(geometry::wrap_angle(poses[0].theta - planned[c.kept]), 0.0, 1e-12) << what;
+    EXPECT_EQ(terms.path_length, c.costs[c.kept]) << what;
+    EXPECT_EQ(placed, poses) << what << ": the hooks were left at another layout";
+    EXPECT_EQ(violation_at(scratch, poses), "") << what;
   }
 }
 
