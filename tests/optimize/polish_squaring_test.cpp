@@ -105,15 +105,10 @@ TEST(Polish, SquaresAnObjectToItsWallKeepingItsGap) {
   }
 }
 
-// A bench alone in a room's middle at 25° to the room, no preference on its
-// heading. A stand-in check refuses the bench at its nearest square heading
-// and at the half turn from it (as a stop it would cover); the two quarter
-// turns are valid, and the planner's cost depends on the heading. The
-// polish plans both and keeps the cheaper, at any cost over the tilted
-// layout; with a planner that loses a tour on every squared layout, it
-// keeps none.
-TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
-  const geometry::Scene scene = geometry::parse_scene(R"({
+//! A bench alone in a 5 m × 4 m room's middle at 25° to the room, no
+//! preference on its heading, and a fixed box: the two squaring tests' room.
+geometry::Scene bench_scene() {
+  return geometry::parse_scene(R"({
     "format": "hrspace-scene/1", "name": "bench",
     "room": {"size": [5, 4]},
     "door": {"center": [2.5, 0.0], "width": 0.9, "clear_depth": 0.3},
@@ -125,14 +120,31 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
     "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"box": 1.0}, "box": {"bench": 1.0}},
                  "sequences": 2, "visits": 2}
   })", "bench");
-  ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
-  const std::vector<bool> movable = movable_of(scene);
+}
+
+//! The bench's nearest square heading: its nearest wall's normal plus the
+//! multiple of a quarter turn nearest its heading (not wrapped).
+double nearest_square_heading(const CostModel& model, const geometry::Scene& scene) {
   const double normal = model.wall_normal_angle(model.nearest_wall(0, scene.objects[0].pose));
   const double off = geometry::wrap_angle(scene.objects[0].pose.theta - normal);
   const double quarter = std::numbers::pi / 2;
-  const double refused = normal + std::round(off / quarter) * quarter;
+  return normal + std::round(off / quarter) * quarter;
+}
+
+// A bench alone in a room's middle at 25° to the room, no preference on its
+// heading. A stand-in check refuses the bench at its nearest square heading
+// and at the half turn from it (as a stop it would cover); the two quarter
+// turns are valid, and the planner's cost depends on the heading. The
+// polish plans both and keeps the cheaper, at any cost over the tilted
+// layout; with a planner that loses a tour on every squared layout, it
+// keeps none.
+TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
+  const geometry::Scene scene = bench_scene();
+  ASSERT_EQ(layout_violation(scene), "");
+  const CostModel model = testing::bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  const double quarter = std::numbers::pi / 2;
+  const double refused = nearest_square_heading(model, scene);
   const auto along = [](double a, double b) { return std::abs(std::sin(a - b)) < 1e-6; };
   // The exact checks (on `scratch`), which also refuse the bench along the
   // nearest square heading: at it or at the half turn from it.
@@ -258,26 +270,11 @@ TEST(Polish, SquaresToTheCheapestHeadingWhenTheNearestIsRefused) {
 // When the nearest costs no more, it is the one planning. A planner that
 // answers by the order of its calls (not by heading) tells them apart.
 TEST(Polish, SquaresToTheFirstHeadingThatCostsNoMore) {
-  const geometry::Scene scene = geometry::parse_scene(R"({
-    "format": "hrspace-scene/1", "name": "bench",
-    "room": {"size": [5, 4]},
-    "door": {"center": [2.5, 0.0], "width": 0.9, "clear_depth": 0.3},
-    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
-    "objects": [
-      {"id": "bench", "size": [1.2, 0.4], "pose": [2.5, 2.2, 0.4363323129985824]},
-      {"id": "box", "size": [0.5, 0.5], "pose": [4.5, 1.5, 0], "fixed": true}
-    ],
-    "activity": {"transitions": {"door": {"bench": 1.0}, "bench": {"box": 1.0}, "box": {"bench": 1.0}},
-                 "sequences": 2, "visits": 2}
-  })", "bench");
+  const geometry::Scene scene = bench_scene();
   ASSERT_EQ(layout_violation(scene), "");
-  CostModel model(scene, scene_sequences(scene));
-  model.set_bounded_preferences(true);
+  const CostModel model = testing::bounded_model(scene);
   const std::vector<bool> movable = movable_of(scene);
-  const double normal = model.wall_normal_angle(model.nearest_wall(0, scene.objects[0].pose));
-  const double off = geometry::wrap_angle(scene.objects[0].pose.theta - normal);
-  const double quarter = std::numbers::pi / 2;
-  const double nearest = geometry::wrap_angle(normal + std::round(off / quarter) * quarter);
+  const double nearest = geometry::wrap_angle(nearest_square_heading(model, scene));
   struct Case {
     std::vector<double> costs;  // the planner's path length at its k-th call
     std::size_t kept;           // the call whose heading is kept
