@@ -60,8 +60,8 @@ TourCorridor::TourCorridor(const geometry::Wheelchair& chair,
   }
 }
 
-bool TourCorridor::clear(const geometry::Polygon& footprint) const {
-  if (shapes_.empty()) return true;
+std::size_t TourCorridor::near(const geometry::Polygon& footprint, std::size_t limit) const {
+  if (shapes_.empty()) return 0;
   const geometry::Polygon h = geometry::convex_hull_doubles(footprint);
   geometry::Box b = geometry::bounding_box(h);
   b.xmin -= margin_;
@@ -72,15 +72,26 @@ bool TourCorridor::clear(const geometry::Polygon& footprint) const {
   const int i1 = static_cast<int>(std::floor((b.xmax - x0_) / cell_));
   const int j0 = static_cast<int>(std::floor((b.ymin - y0_) / cell_));
   const int j1 = static_cast<int>(std::floor((b.ymax - y0_) / cell_));
+  // A footprint listed in several cells counts once.
+  std::vector<int> hit;
   for (int j = std::max(0, j0); j <= std::min(ny_ - 1, j1); ++j)
     for (int i = std::max(0, i0); i <= std::min(nx_ - 1, i1); ++i)
       for (const int s : cells_[static_cast<std::size_t>(j) * static_cast<std::size_t>(nx_) +
                                 static_cast<std::size_t>(i)]) {
         const geometry::Box& c = boxes_[static_cast<std::size_t>(s)];
         if (c.xmin > b.xmax || c.xmax < b.xmin || c.ymin > b.ymax || c.ymax < b.ymin) continue;
-        if (!separated(h, shapes_[static_cast<std::size_t>(s)], margin_)) return false;
+        if (std::find(hit.begin(), hit.end(), s) != hit.end()) continue;
+        if (separated(h, shapes_[static_cast<std::size_t>(s)], margin_)) continue;
+        hit.push_back(s);
+        if (hit.size() >= limit) return hit.size();
       }
-  return true;
+  return hit.size();
+}
+
+bool TourCorridor::clear(const geometry::Polygon& footprint) const { return near(footprint, 1) == 0; }
+
+std::size_t TourCorridor::blocked(const geometry::Polygon& footprint) const {
+  return near(footprint, shapes_.size());
 }
 
 ArrangeResult arrange(const CostModel& model, const std::vector<bool>& movable,

@@ -44,9 +44,17 @@ class TourCorridor {
   TourCorridor(const geometry::Wheelchair& chair, const std::vector<planning::Tour>& tours,
                double margin = 0.05, double cell = 0.25);
   bool clear(const geometry::Polygon& footprint) const;
+  //! How many of the chair's footprints along the tours `footprint` comes
+  //! within the margin of (0 exactly when clear()): a graded clear(), the
+  //! fewer the likelier a move keeps the tours.
+  std::size_t blocked(const geometry::Polygon& footprint) const;
   std::size_t footprints() const { return shapes_.size(); }
 
  private:
+  //! How many chair footprints `footprint` comes within the margin of,
+  //! counting stopped at `limit`.
+  std::size_t near(const geometry::Polygon& footprint, std::size_t limit) const;
+
   std::vector<geometry::Polygon> shapes_;  //!< chair footprints (convex)
   std::vector<geometry::Box> boxes_;
   std::vector<std::vector<int>> cells_;    //!< shape indices per grid cell

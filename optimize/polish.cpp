@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <optional>
 
 #include "geometry/polygon_ops.h"
@@ -220,15 +219,29 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     bool clear;
     PreferenceReport report;
     GroupMove move;
+    //! Chair footprints of the kept tours its moved objects come near
+    //! (TourCorridor::blocked; set by try_best for candidates not clear).
+    std::size_t blocked = 0;
   };
   // Plannings of the rearrangement below, which has an allowance of its own.
   int rearrange_tries = 0;
   const auto try_best = [&](std::vector<Candidate>& candidates, std::size_t tries,
                             bool no_costlier) {
+    for (Candidate& c : candidates) {
+      c.blocked = 0;
+      if (c.clear || !corridor) continue;
+      for (const auto& [k, pose] : c.move) {
+        geometry::Object o = scene.objects[static_cast<std::size_t>(k)];
+        o.pose = pose;
+        c.blocked += corridor->blocked(geometry::world_footprint(o));
+      }
+    }
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) {
                        if (a.clear != b.clear) return a.clear;
-                       return polish_score(a.report) > polish_score(b.report);
+                       const int sa = polish_score(a.report), sb = polish_score(b.report);
+                       if (sa != sb) return sa > sb;
+                       return a.blocked < b.blocked;
                      });
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
       if (out.tried - rearrange_tries >= max_tries || (stop && stop->load())) break;
@@ -270,6 +283,11 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     std::vector<geometry::Pose2> targets = preferred_poses(scene, model, poses, object);
     for (const geometry::Pose2& at : wall_slides(scene, model, poses, object, kWallSlideStep))
       targets.push_back(at);
+    // A free object's places around its partners (a lamp whose front has
+    // no room where it stands goes round the bed to where it has).
+    if (gross)
+      for (const geometry::Pose2& at : relation_slides(scene, poses, object, kWallSlideStep))
+        targets.push_back(at);
     for (const geometry::Pose2& to : targets) {
       if (places >= kEvictPlaces || (stop && stop->load())) break;
       std::vector<geometry::Pose2> p = poses;
@@ -623,7 +641,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     // plan loses a tour, the next cheapest is tried.
     std::vector<std::pair<double, std::pair<geometry::Pose2, PreferenceReport>>> found;
     bool kept = false;
-    for (std::size_t k = 0; k < squares.size() && !kept && budget_left(2); ++k) {
+    for (std::size_t k = 0; k < squares.size() && budget_left(2); ++k) {
       auto c = candidate(squares[k]);
       if (!c) continue;
       ++out.tried;

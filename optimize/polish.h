@@ -12,11 +12,15 @@
 // exchanges that score higher planned (kept only at no higher total
 // cost, unless it mends an angle more than 20° off). When the object's
 // heading is still more than 20° off, the places that would mend it
-// (alone or with one relation partner at one of its preferred poses) are
+// (its preferred poses and wall places, and for an object without a wall
+// distance its places round each relation partner, relation_slides; alone
+// or with one relation partner at one of its preferred poses) are
 // freed: one or two movable objects holding such a place move to their own
 // wall places or preferred poses, or to the place the object leaves (an
 // eviction; the best four planned, kept at any cost when they score no
-// lower). A move is kept when the layout
+// lower). Candidates are planned clear of the kept tours' corridor first,
+// then by score, then by how few of the tours' chair footprints they come
+// near (TourCorridor::blocked). A move is kept when the layout
 // is valid, every tour found before is still found (the tours are planned
 // again) and the preference score rises (an eviction's: does not fall,
 // and fewer angles are more than 20° off): preferences met, less one for

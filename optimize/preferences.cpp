@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace hrs::optimize {
 
@@ -221,6 +222,45 @@ std::vector<Pose2> wall_slides(const geometry::Scene& scene, const CostModel& mo
   }
   std::stable_sort(ranked.begin(), ranked.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& r : ranked) out.push_back(r.second);
+  return out;
+}
+
+std::vector<Pose2> relation_slides(const geometry::Scene& scene, const std::vector<Pose2>& poses,
+                                   int object, double step) {
+  std::vector<Pose2> out;
+  const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
+  if ((o.wall && o.wall->distance) || !(step > 0.0)) return out;
+  const Pose2 now = pose_of(poses, object);
+  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  Vec2 hi{-lo.x, -lo.y};
+  for (const Vec2& v : scene.room.polygon) {
+    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+  }
+  std::vector<std::pair<double, Pose2>> ranked;
+  for (const geometry::Relation& r : scene.relations) {
+    const int a = scene.find_object(r.a), b = scene.find_object(r.b);
+    if (a < 0 || b < 0 || (a != object && b != object) || !r.distance || !(*r.distance > 0.0))
+      continue;
+    const Pose2 other = pose_of(poses, a == object ? b : a);
+    const double d = *r.distance;
+    // At least eight places, and at most one per centimetre of arc.
+    const int n = std::clamp(static_cast<int>(std::ceil(2.0 * std::numbers::pi * d / step)), 8,
+                             std::max(8, static_cast<int>(2.0 * std::numbers::pi * d * 100.0)));
+    for (int j = 0; j < n; ++j) {
+      const double phi = 2.0 * std::numbers::pi * j / n;
+      const Vec2 c{other.x + d * std::cos(phi), other.y + d * std::sin(phi)};
+      if (c.x < lo.x || c.x > hi.x || c.y < lo.y || c.y > hi.y) continue;
+      double theta = now.theta;
+      if (r.angle) theta = a == object ? other.theta + *r.angle : other.theta - *r.angle;
+      if (r.faces && a == object) theta = std::atan2(other.y - c.y, other.x - c.x);
+      ranked.emplace_back(geometry::norm(c - now.position()),
+                          Pose2{c.x, c.y, geometry::wrap_angle(theta)});
+    }
+  }
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
   for (const auto& r : ranked) out.push_back(r.second);
   return out;
 }

@@ -88,6 +88,20 @@ std::vector<geometry::Pose2> wall_slides(const geometry::Scene& scene, const Cos
                                          const std::vector<geometry::Pose2>& poses, int object,
                                          double step);
 
+//! Poses of `object` on the circle of each of its relations' distances
+//! around the partner, `step` metres apart along the arc, turned as the
+//! relation asks (the partner's heading plus its angle, or facing the
+//! partner when it is the facing side; else the object's own heading),
+//! nearest the current position first; centres outside the room's bounding
+//! box are left out. Empty when the object has a wall distance preference
+//! (its places meeting a relation's distance are its wall places at that
+//! distance, among preferred_poses()) or no relation with a distance. The
+//! places a free object (a lamp, a stool) can meet a relation when the spot
+//! on the line to its partner is taken or leaves no room in front of it.
+std::vector<geometry::Pose2> relation_slides(const geometry::Scene& scene,
+                                             const std::vector<geometry::Pose2>& poses,
+                                             int object, double step);
+
 //! The groups of objects linked by relation angles (connected through
 //! relations with an `angle`), each ascending, groups by their first
 //! object; only groups with at least two objects.

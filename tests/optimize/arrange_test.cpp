@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The preference arrangement (optimize/arrange.h): the tour corridor against
+// The preference arrangement (optimize/arrange.h): the tour corridor and its
+// count of blocked footprints against
 // brute force (exact polygon overlap and segment distances) on thousands of
 // random paths and objects, and arrangements of the shipped rooms that stay
 // valid, lower the interior cost, leave stops and fixed objects in place
@@ -62,7 +63,7 @@ TEST(TourCorridor, AgreesWithBruteForceOnRandomPathsAndObjects) {
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const geometry::Wheelchair chair{1.1, 0.65, 0.7};
   const double margin = 0.05;
-  int blocked = 0, clear = 0, near = 0;
+  int blocked = 0, clear = 0, near = 0, several = 0;
   for (int c = 0; c < 3000; ++c) {
     // One found tour of two legs: straight runs with a turning heading.
     planning::Tour tour;
@@ -93,9 +94,28 @@ TEST(TourCorridor, AgreesWithBruteForceOnRandomPathsAndObjects) {
           object.push_back(geometry::to_world(at, v));
       }
       double gap = 1e300;
+      // Waypoints whose footprint the object comes within the margin of
+      // (`touched`), and those a little farther (`fuzzy`), for blocked().
+      std::size_t touched = 0, fuzzy = 0;
       for (const planning::Leg& l : tour.legs)
-        for (const Pose2& p : l.waypoints) gap = std::min(gap, polygon_gap(object, geometry::chair_footprint(chair, p)));
+        for (const Pose2& p : l.waypoints) {
+          const double g = polygon_gap(object, geometry::chair_footprint(chair, p));
+          gap = std::min(gap, g);
+          if (g <= margin) {
+            ++touched;
+          } else if (!(g > margin * std::numbers::sqrt2 + 1e-9 && c % 3 != 0)) {
+            ++fuzzy;
+          }
+        }
       const bool ok = corridor.clear(object);
+      // blocked() counts each footprint once, is 0 exactly when clear(), and
+      // lies between the footprints surely within the margin and those
+      // plus the ones near it.
+      const std::size_t count = corridor.blocked(object);
+      EXPECT_EQ(count == 0, ok) << "case " << c;
+      EXPECT_GE(count, touched) << "case " << c;
+      EXPECT_LE(count, touched + fuzzy) << "case " << c;
+      if (touched > 1) ++several;
       // Sound: an object touching a chair footprint, or within the margin,
       // is never clear. Near-complete: one farther than the margin's
       // diagonal (separating axes are exact for overlap, conservative by at
@@ -114,6 +134,7 @@ TEST(TourCorridor, AgreesWithBruteForceOnRandomPathsAndObjects) {
   EXPECT_GT(blocked, 1000);
   EXPECT_GT(clear, 1000);
   EXPECT_GT(near, 10);
+  EXPECT_GT(several, 1000);
 }
 
 TEST(TourCorridor, UnfoundToursAndNoToursBlockNothing) {

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The polish's evictions (optimize/polish.h): on built rooms, a place that
 // mends a gross angle miss freed by moving its holder, kept at a higher
-// cost but not at a lost tour; an eviction that takes the object's side of
-// its relations along; and the last pass, which frees a held place for a
+// cost but not at a lost tour; a free object moved round its relation
+// partner; an eviction that takes the object's side of its relations
+// along; and the last pass, which frees a held place for a
 // miss that is not an angle, kept only at no higher total cost. The other
 // moves' tests: polish_test.cpp and polish_squaring_test.cpp.
 
@@ -128,6 +129,69 @@ TEST(Polish, KeepsAnEvictionAtAHigherCostButNotAtALostTour) {
       EXPECT_EQ(check_preferences(scene, model, poses).met, 2);
     }
   }
+}
+
+//! A fixed bed and a free lamp that wants to stand 1.5 m from it turned a
+//! quarter from the bed's heading (relation angle π/2); the lamp stands at
+//! that distance on the bed's left, 90° off, between two fixed posts that
+//! stop it turning in place (even nudged by 30 cm); a fixed post holds the
+//! spot in front of the bed at the distance. Two boxes are the tours' stops.
+geometry::Scene lamp_scene() {
+  return geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "lamp",
+    "room": {"size": [5, 4]},
+    "door": {"center": [4.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "bed", "size": [2.0, 1.4], "pose": [2.5, 2.0, 0], "fixed": true},
+      {"id": "lamp", "size": [0.3, 0.6], "pose": [1.0, 2.0, 0]},
+      {"id": "post_left", "size": [0.2, 1.4], "pose": [0.62, 2.0, 0], "fixed": true},
+      {"id": "post_right", "size": [0.2, 1.4], "pose": [1.38, 2.0, 0], "fixed": true},
+      {"id": "post_front", "size": [0.2, 1.4], "pose": [4.0, 2.0, 0], "fixed": true},
+      {"id": "box_a", "size": [0.4, 0.4], "pose": [0.3, 0.3, 0]},
+      {"id": "box_b", "size": [0.4, 0.4], "pose": [4.7, 3.7, 3.141592653589793]}
+    ],
+    "relations": [{"a": "lamp", "b": "bed", "distance": 1.5, "angle": 1.5707963267948966}],
+    "activity": {"transitions": {"door": {"box_a": 1.0}, "box_a": {"box_b": 1.0},
+                                 "box_b": {"box_a": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "lamp");
+}
+
+// No preferred pose of the lamp fits (turned where it stands, or in front
+// of the bed), and it has no wall to slide along; the eviction's places
+// round the bed at the relation's distance (relation_slides) include one
+// that fits, where the lamp meets both its distance and its angle.
+TEST(Polish, MovesAFreeObjectRoundItsPartnerToMendAGrossAngleMiss) {
+  const geometry::Scene scene = lamp_scene();
+  ASSERT_EQ(layout_violation(scene), "");
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  std::vector<Pose2> poses = poses_of(scene);
+  const PreferenceReport before = check_preferences(scene, model, poses);
+  ASSERT_EQ(before.total, 2);
+  ASSERT_EQ(before.met, 1);  // the distance
+  ASSERT_NEAR(before.worst_angle, std::numbers::pi / 2, 1e-9);
+  // Not one of the lamp's preferred poses fits.
+  geometry::Scene scratch = scene;
+  for (const Pose2& at : preferred_poses(scene, model, poses, 1)) {
+    std::vector<Pose2> p = poses;
+    p[1] = at;
+    EXPECT_NE(violation_at(scratch, p), "") << at.x << " " << at.y << " " << at.theta;
+  }
+  PolishHooks hooks = exact_hooks(scratch);
+  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
+  CostTerms terms = two_tours_found();
+  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  EXPECT_EQ(r.evicted, 1);
+  const PreferenceReport after = check_preferences(scene, model, poses);
+  EXPECT_EQ(after.met, 2);
+  EXPECT_NEAR(geometry::norm(poses[1].position() - Vec2{2.5, 2.0}), 1.5, 1e-9);
+  EXPECT_NEAR(geometry::wrap_angle(poses[1].theta - std::numbers::pi / 2), 0.0, 1e-9);
+  EXPECT_EQ(violation_at(scratch, poses), "");
+  // Only the lamp moved.
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    if (i != 1) EXPECT_EQ(poses[i], scene.objects[i].pose) << i;
 }
 
 //! The room of the final pass's test below: a sofa on the top wall wants

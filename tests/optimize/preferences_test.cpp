@@ -2,9 +2,10 @@
 // Preferences (optimize/preferences.h): residuals against hand computation
 // (an object 3° off its wall, a TV facing away, a relation distance), which
 // terms count, the wall poses that preferred_poses() proposes on thousands
-// of random rooms and objects, and preference moves that never leave the
-// layout invalid; the exchanges of places (swaps) against the footprints'
-// world vertices.
+// of random rooms and objects, the places around a relation partner
+// (relation_slides) on thousands of random layouts, and preference moves
+// that never leave the layout invalid; the exchanges of places (swaps)
+// against the footprints' world vertices.
 
 #include "optimize/preferences.h"
 
@@ -186,6 +187,82 @@ TEST(Preferences, WallPosesMeetTheirWallOnRandomRoomsAndObjects) {
   }
   EXPECT_GT(checked, 1000);
   EXPECT_GT(slides_checked, 5000);  // slides that reached the check
+}
+
+TEST(Preferences, RelationSlidesMeetTheirRelationOnRandomLayouts) {
+  std::mt19937_64 rng(3535);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int checked = 0, scenes = 0;
+  for (int room = 0; room < 400; ++room) {
+    const double w = 3 + 5 * u(rng), h = 3 + 4 * u(rng);
+    const double d = 0.5 + 2.0 * u(rng);
+    // Every second relation asks for an angle, every third (of the others)
+    // for `a` to face `b`; the object at either end.
+    const bool angle = room % 2 == 0, faces = !angle && room % 3 == 0;
+    const double alpha = (u(rng) - 0.5) * 2.0 * kPi;
+    const int object = room % 4 < 2 ? 0 : 1;
+    std::string relation = R"({"a": "a", "b": "b", "distance": )" + std::to_string(d);
+    if (angle) relation += R"(, "angle": )" + std::to_string(alpha);
+    if (faces) relation += R"(, "faces": true)";
+    relation += "}";
+    const std::string text = R"({"format": "hrspace-scene/1", "name": "r",
+      "room": {"size": [)" + std::to_string(w) + "," + std::to_string(h) + R"(]},
+      "door": {"center": [0.6, 0.0], "width": 0.9, "clear_depth": 0.3},
+      "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+      "objects": [{"id": "a", "size": [0.4, 0.4], "pose": [1.0, 2.0, 0.3]},
+                  {"id": "b", "size": [0.5, 0.5], "pose": [2.2, 1.2, 0]}],
+      "relations": [)" + relation + R"(],
+      "activity": {"transitions": {"door": {"a": 1.0}, "a": {"b": 1.0}, "b": {"a": 1.0}},
+                   "sequences": 2, "visits": 2}})";
+    const Scene s = geometry::parse_scene(text, "random");
+    ++scenes;
+    const CostModel model(s, scene_sequences(s));
+    std::vector<Pose2> p = poses_of(s);
+    for (int trial = 0; trial < 5; ++trial) {
+      p[0] = {w * u(rng), h * u(rng), 2 * kPi * u(rng)};
+      p[1] = {w * u(rng), h * u(rng), 2 * kPi * u(rng)};
+      const auto slides = relation_slides(s, p, object, 0.2);
+      // At least eight places where the circle is inside the room, about
+      // 0.2 m apart along it, nearest the current position first.
+      EXPECT_LE(slides.size(), static_cast<std::size_t>(std::ceil(2 * kPi * d / 0.2)));
+      for (std::size_t k = 1; k < slides.size(); ++k)
+        EXPECT_LE(geometry::norm(slides[k - 1].position() - p[object].position()),
+                  geometry::norm(slides[k].position() - p[object].position()));
+      for (const Pose2& c : slides) {
+        EXPECT_TRUE(c.x >= 0.0 && c.x <= w && c.y >= 0.0 && c.y <= h);
+        std::vector<Pose2> q = p;
+        q[static_cast<std::size_t>(object)] = c;
+        const PreferenceReport r = check_preferences(s, model, q);
+        // The distance is met, and so is the angle, or the facing when the
+        // moved object is the one that faces; the other object's facing
+        // depends on where it stands, and is not asked of the slides.
+        for (const PreferenceCheck& k : r.checks) {
+          if (k.kind == "relation_faces" && object == 1) continue;
+          EXPECT_TRUE(k.met) << k.kind << " residual " << k.residual << " room " << room;
+          if (k.kind == "relation_distance") EXPECT_NEAR(k.achieved, k.target, 1e-9);
+        }
+        ++checked;
+      }
+      // A turn the relation does not ask for keeps the current heading.
+      if (!angle && !(faces && object == 0))
+        for (const Pose2& c : slides) EXPECT_NEAR(c.theta, geometry::wrap_angle(p[object].theta), 1e-12);
+    }
+  }
+  EXPECT_EQ(scenes, 400);
+  EXPECT_GT(checked, 20000);
+}
+
+TEST(Preferences, RelationSlidesAreEmptyForAWallObjectOrWithoutADistance) {
+  const Scene s = pref_scene();
+  const CostModel model(s, scene_sequences(s));
+  const std::vector<Pose2> p = poses_of(s);
+  // The desk has a wall distance; the bed's relation has a distance (tv);
+  // the fixed lamp's relation too; the shelf has a wall preference.
+  EXPECT_TRUE(relation_slides(s, p, 0, 0.2).empty());
+  EXPECT_FALSE(relation_slides(s, p, 2, 0.2).empty());
+  EXPECT_FALSE(relation_slides(s, p, 1, 0.2).empty());
+  EXPECT_TRUE(relation_slides(s, p, 3, 0.2).empty());
+  EXPECT_TRUE(relation_slides(s, p, 2, 0.0).empty());
 }
 
 TEST(Preferences, GroupTurnsMeetEveryRelationAngleOfAConsistentGroup) {
