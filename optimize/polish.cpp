@@ -220,16 +220,23 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     PreferenceReport report;
     GroupMove move;
     //! Chair footprints of the kept tours its moved objects come near
-    //! (TourCorridor::blocked; set by try_best for candidates not clear).
+    //! (TourCorridor::blocked; set by try_best, when it ranks by it, for
+    //! candidates not clear).
     std::size_t blocked = 0;
   };
-  // Plannings of the rearrangement below, which has an allowance of its own.
-  int rearrange_tries = 0;
+  // Plannings with an allowance of their own: the rearrangement's, and the
+  // second round of a gross miss's eviction (evict()).
+  int own_tries = 0;
+  // With `by_blocked`, candidates of equal score are taken by how few of
+  // the kept tours' chair footprints they come near (TourCorridor::blocked)
+  // rather than in the order found.
+  // With `own`, the plannings are counted in `own_tries`, beyond
+  // `max_tries`.
   const auto try_best = [&](std::vector<Candidate>& candidates, std::size_t tries,
-                            bool no_costlier) {
+                            bool no_costlier, bool by_blocked = false, bool own = false) {
     for (Candidate& c : candidates) {
       c.blocked = 0;
-      if (c.clear || !corridor) continue;
+      if (!by_blocked || c.clear || !corridor) continue;
       for (const auto& [k, pose] : c.move) {
         geometry::Object o = scene.objects[static_cast<std::size_t>(k)];
         o.pose = pose;
@@ -244,8 +251,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                        return a.blocked < b.blocked;
                      });
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
-      if (out.tried - rearrange_tries >= max_tries || (stop && stop->load())) break;
+      if ((!own && out.tried - own_tries >= max_tries) || (stop && stop->load())) break;
       ++out.tried;
+      if (own) ++own_tries;
       const bool capped = no_costlier && gross_misses(candidates[k].report) >= gross_misses(report);
       if (try_moves(candidates[k].move, candidates[k].report, capped)) return true;
     }
@@ -398,7 +406,16 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         evictions.push_back({clear_all(move), std::move(next), std::move(move)});
       }
     }
-    if (!try_best(evictions, kEvictTries, true)) return false;
+    if (!try_best(evictions, kEvictTries, true)) {
+      // For a gross miss, the next few of those not yet planned, fewest
+      // blocked footprints first: the places found first (preferred poses,
+      // the nearest slides) can all stand in the tours' way, where a place
+      // farther round (a lamp at the bed's far corner) leaves them be. An
+      // allowance of its own: the moves before may have spent the budget.
+      if (!gross || evictions.size() <= kEvictTries) return false;
+      evictions.erase(evictions.begin(), evictions.begin() + kEvictTries);
+      if (!try_best(evictions, kEvictTries, true, true, true)) return false;
+    }
     ++out.kept, ++out.evicted;
     return true;
   };
@@ -503,11 +520,13 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   }
   // Groups linked by relation angles turn as one body (a bed, the TV that
   // faces it and the chair beside it): one object at a time cannot meet a
-  // relation without breaking another of the group.
+  // relation without breaking another of the group, nor a member's wall
+  // angle without breaking the relations it keeps (a TV askew to its wall
+  // with the table and the plant turned to it).
   for (const std::vector<int>& group : heading_groups(scene)) {
     const auto unmet = [&] {
       return std::any_of(report.checks.begin(), report.checks.end(), [&](const PreferenceCheck& c) {
-        if (c.met || c.kind != "relation_angle") return false;
+        if (c.met || (c.kind != "relation_angle" && c.kind != "wall_angle")) return false;
         const int a = scene.find_object(c.object);
         return std::find(group.begin(), group.end(), a) != group.end();
       });
@@ -552,7 +571,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     // the local moves above may have spent theirs.
     for (Rearrangement& f : rearrangements(scene, model, movable, poses, report, rh, stop)) {
       if (stop && stop->load()) break;
-      ++out.tried, ++rearrange_tries;
+      ++out.tried, ++own_tries;
       if (try_moves(f.move, f.report)) {
         ++out.kept, ++out.rearranged;
         break;
@@ -577,7 +596,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // docs/BENCHMARKS.md, 2026-11-30).
   for (std::size_t i = 0; i < poses.size(); ++i) {
     const int object = static_cast<int>(i);
-    if (!movable[i] || heading_fixed(scene, object) || out.tried - rearrange_tries >= max_tries ||
+    if (!movable[i] || heading_fixed(scene, object) || out.tried - own_tries >= max_tries ||
         (stop && stop->load()))
       continue;
     const int wall = model.nearest_wall(object, poses[i]);
@@ -630,7 +649,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     };
     // Whether `n` more plannings fit in the budget.
     const auto budget_left = [&](int n = 1) {
-      return out.tried - rearrange_tries + n <= max_tries && !(stop && stop->load());
+      return out.tried - own_tries + n <= max_tries && !(stop && stop->load());
     };
     // The square headings, nearest first, each planned while two plannings
     // are left (one to evaluate, one to keep): the first whose tours are all
@@ -679,7 +698,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // It runs after every other step, so that those find the layout and the
   // budget they had without it.
   for (std::size_t i = 0; i < poses.size(); ++i) {
-    if (!movable[i] || out.tried - rearrange_tries >= max_tries || (stop && stop->load())) continue;
+    if (!movable[i] || out.tried - own_tries >= max_tries || (stop && stop->load())) continue;
     const std::string& id = scene.objects[i].id;
     const bool unmet = std::any_of(report.checks.begin(), report.checks.end(), [&](const PreferenceCheck& c) {
       return !c.met && (c.object == id || c.other == id);

@@ -18,15 +18,16 @@
 // freed: one or two movable objects holding such a place move to their own
 // wall places or preferred poses, or to the place the object leaves (an
 // eviction; the best four planned, kept at any cost when they score no
-// lower). Candidates are planned clear of the kept tours' corridor first,
-// then by score, then by how few of the tours' chair footprints they come
-// near (TourCorridor::blocked). A move is kept when the layout
+// lower; when none keeps the tours, four more, those that come near the
+// fewest of the tours' chair footprints first, TourCorridor::blocked, with
+// an allowance of their own). A move is kept when the layout
 // is valid, every tour found before is still found (the tours are planned
 // again) and the preference score rises (an eviction's: does not fall,
 // and fewer angles are more than 20° off): preferences met, less one for
 // each angle preference more than 20° off.
 // Then each group of objects linked by relation angles (heading_groups) with
-// an unmet relation angle is tried turned as one body (group_turns; a wall
+// an unmet relation angle, or a member with an unmet wall angle, is tried
+// turned as one body (group_turns; a wall
 // object whose spot is taken slides along the walls that give it the same
 // heading, and is also tried at its next places there; a turned member that
 // no longer fits is nudged up to 30 cm), the best two placements planned, on

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <random>
 #include <string>
@@ -31,6 +32,11 @@ constexpr double kInCorridor = 0.5;
 //! The share of steps whose object is drawn among all movable objects,
 //! not only those with an unmet preference.
 constexpr double kAnyObject = 0.25;
+
+//! How far an object without preferences is drawn from where it stands
+//! (metres): far enough to leave a place or the approach to it, near
+//! enough to keep the tours round it.
+constexpr double kAsideRadius = 1.0;
 
 //! Draws a holder makes for a place of its own before the step is dropped.
 constexpr int kHolderDraws = 8;
@@ -87,14 +93,33 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
   const auto slides_of = [&](int k) -> const std::vector<geometry::Pose2>& {
     auto& w = slides[static_cast<std::size_t>(k)];
     if (!w) w = wall_slides(scene, model, poses, k, kWallSlideStep);
+    // A free object's places round its relation partners instead.
+    if (w->empty()) w = relation_slides(scene, poses, k, kWallSlideStep);
     return *w;
   };
-  // A place for object k: half the draws among its `preferred` poses, half
-  // among its wall places and `extra` (when given); nullopt when it has
-  // none.
+  geometry::Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
+  for (const geometry::Vec2& v : scene.room.polygon) {
+    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
+    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
+  }
+  // A place for object k (now at `now`): half the draws among its
+  // `preferred` poses, half among its wall places (or places round its
+  // partners) and `extra` (when given). An object with none of these (no
+  // preference: a chair, an armchair) gets a uniform position within
+  // kAsideRadius of where it stands, with its heading, in half the draws
+  // when `extra` is given: such an object would otherwise never leave a
+  // place another needs, nor the way to it.
   const auto draw = [&](std::mt19937_64& rng, const std::vector<geometry::Pose2>& preferred, int k,
+                        const geometry::Pose2& now,
                         const geometry::Pose2* extra) -> std::optional<geometry::Pose2> {
     const std::vector<geometry::Pose2>& walls = slides_of(k);
+    if (preferred.empty() && walls.empty() && (!extra || uniform01(rng) < 0.5)) {
+      // Uniform in the disc of kAsideRadius round it, in the room's box.
+      const double r = kAsideRadius * std::sqrt(uniform01(rng));
+      const double a = 2.0 * std::numbers::pi * uniform01(rng);
+      return geometry::Pose2{std::clamp(now.x + r * std::cos(a), lo.x, hi.x),
+                             std::clamp(now.y + r * std::sin(a), lo.y, hi.y), now.theta};
+    }
     const std::size_t others = walls.size() + (extra ? 1 : 0);
     if (preferred.empty() && others == 0) return std::nullopt;
     if (!preferred.empty() && (others == 0 || uniform01(rng) < 0.5))
@@ -129,7 +154,7 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
       if (pool.empty()) pool = free_objects;
       const int o = pool[uniform_index(rng, pool.size())];
       const std::optional<geometry::Pose2> to =
-          draw(rng, preferred_poses(scene, model, q, o), o, nullptr);
+          draw(rng, preferred_poses(scene, model, q, o), o, q[static_cast<std::size_t>(o)], nullptr);
       if (!to) continue;
       std::vector<geometry::Pose2> next = q;
       next[static_cast<std::size_t>(o)] = *to;
@@ -147,7 +172,7 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
           bool ok = false;
           for (int attempt = 0; attempt < kHolderDraws && !ok; ++attempt) {
             const std::optional<geometry::Pose2> theirs =
-                draw(rng, preferred, j, &q[static_cast<std::size_t>(o)]);
+                draw(rng, preferred, j, next[static_cast<std::size_t>(j)], &q[static_cast<std::size_t>(o)]);
             next[static_cast<std::size_t>(j)] = *theirs;  // `extra` makes one exist
             ok = hooks.fits(next, j);
           }

@@ -12,8 +12,10 @@
 // schedule. A step takes one object with an unmet preference (or, one step
 // in four, any movable object) to one of its preferred poses or wall places
 // (half the draws from each list: an object has a handful of preferred
-// poses against about a hundred wall places), moving the one or two movable
-// objects that hold the place to places of their own. Its energy is
+// poses against about a hundred wall places; an object without a wall
+// distance has its places round its relation partners instead, and one
+// with neither a uniform position within 1 m of where it stands), moving the
+// one or two movable objects that hold the place to places of their own. Its energy is
 //   E = -score + gross + 0.05 * (metres moved) + 0.5 * (moved objects in the
 //       kept tours' corridor),
 // score and gross as below. Nothing is planned: the chains return their best

@@ -194,6 +194,43 @@ TEST(Polish, MovesAFreeObjectRoundItsPartnerToMendAGrossAngleMiss) {
     if (i != 1) EXPECT_EQ(poses[i], scene.objects[i].pose) << i;
 }
 
+// The same room with a planner that loses a tour on its first four
+// layouts and a budget of four plannings: the eviction's first four places
+// are refused, and four more have an allowance of their own, beyond the
+// budget; the fifth planned keeps every tour and is kept. With a planner
+// that loses a tour on every layout, the eviction plans eight and keeps
+// none (the rearrangement's chains then plan theirs, one each at most).
+TEST(Polish, AGrossMissesEvictionPlansFourMorePlacesBeyondTheBudget) {
+  const geometry::Scene scene = lamp_scene();
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  for (const int refused : {4, 1000}) {
+    std::vector<Pose2> poses = poses_of(scene);
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    int calls = 0;
+    hooks.plan = [&](const std::vector<Pose2>&) {
+      CostTerms t = two_tours_found();
+      if (++calls <= refused) t.tours_found = 1;
+      return t;
+    };
+    CostTerms terms = two_tours_found();
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 4);
+    if (refused == 4) {
+      EXPECT_EQ(r.evicted, 1);
+      EXPECT_EQ(calls, 5);
+      EXPECT_EQ(check_preferences(scene, model, poses).met, 2);
+      EXPECT_EQ(violation_at(scratch, poses), "");
+    } else {
+      EXPECT_EQ(r.kept, 0);
+      EXPECT_GE(calls, 8);
+      EXPECT_LE(calls, 8 + 8);
+      EXPECT_EQ(poses, poses_of(scene));
+    }
+    EXPECT_EQ(terms.tours_found, 2);
+  }
+}
+
 //! The room of the final pass's test below: a sofa on the top wall wants
 //! 4.4 m from a fixed TV on the left wall (relation distance, no angle),
 //! which only a place on the right wall meets; a movable cabinet, 3 m long,

@@ -182,6 +182,51 @@ TEST(Polish, TurnsAGroupLinkedByRelationAnglesAsOneBody) {
   }
 }
 
+// Three square stools in a row, linked by relation angles 0; the first
+// wants its wall angle towards the bottom wall, its nearest, and stands a
+// quarter turn off it with the others turned as it is. Every relation
+// angle is met, so only the wall angle is unmet: turning the first alone,
+// or with one partner, breaks a relation by 90°. The group's quarter turn,
+// anchored on the first's wall heading, meets all three.
+TEST(Polish, TurnsAGroupAsOneBodyForAMembersWallAngle) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "stools",
+    "room": {"size": [6, 4]},
+    "door": {"center": [5.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "a", "size": [0.4, 0.4], "pose": [2.0, 1.3, 0], "wall": {"angle": 0}},
+      {"id": "b", "size": [0.4, 0.4], "pose": [2.5, 1.3, 0]},
+      {"id": "c", "size": [0.4, 0.4], "pose": [3.0, 1.3, 0]}
+    ],
+    "relations": [{"a": "a", "b": "b", "angle": 0}, {"a": "b", "b": "c", "angle": 0}],
+    "activity": {"transitions": {"door": {"a": 1.0}, "a": {"c": 1.0}, "c": {"a": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "stools");
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable{true, true, true};
+  std::vector<Pose2> poses = poses_of(scene);
+  const PreferenceReport before = check_preferences(scene, model, poses);
+  ASSERT_EQ(before.total, 3);
+  ASSERT_EQ(before.met, 2);
+  ASSERT_NEAR(before.worst_angle, std::numbers::pi / 2, 1e-9);
+  geometry::Scene scratch = scene;
+  PolishHooks hooks = exact_hooks(scratch);
+  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
+  CostTerms terms = two_tours_found();
+  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  EXPECT_EQ(r.turned, 1);
+  EXPECT_EQ(r.kept, 0);
+  const PreferenceReport after = check_preferences(scene, model, poses);
+  EXPECT_EQ(after.met, 3);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(geometry::wrap_angle(poses[static_cast<std::size_t>(i)].theta - std::numbers::pi / 2),
+                0.0, 1e-9);
+    EXPECT_EQ(poses[static_cast<std::size_t>(i)].position(),
+              scene.objects[static_cast<std::size_t>(i)].pose.position());
+  }
+}
+
 //! Two desks of one size: `far` wants to stand 0.75 m from a fixed lamp in
 //! a corner, and `near`, which wants nothing, holds the only place there.
 geometry::Scene desks_scene() {
