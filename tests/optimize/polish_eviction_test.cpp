@@ -30,6 +30,7 @@ using testing::bounded_model;
 using testing::exact_hooks;
 using testing::movable_of;
 using testing::poses_of;
+using testing::polish_all_found;
 using testing::two_tours_found;
 using testing::violation_at;
 const auto polish_gross = testing::gross_count;
@@ -79,10 +80,7 @@ TEST(Polish, EvictsTheHolderOfThePlaceThatMendsAGrossAngleMiss) {
   turned.objects[0].pose.theta = std::numbers::pi / 2;
   ASSERT_NE(object_violation(turned, 0), "");
   geometry::Scene scratch = scene;
-  PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-  CostTerms terms = two_tours_found();
-  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
   EXPECT_EQ(r.evicted, 1);
   EXPECT_EQ(r.slid + r.swapped + r.turned, 0);
   const PreferenceReport after = check_preferences(scene, model, poses);
@@ -179,10 +177,7 @@ TEST(Polish, MovesAFreeObjectRoundItsPartnerToMendAGrossAngleMiss) {
     p[1] = at;
     EXPECT_NE(violation_at(scratch, p), "") << at.x << " " << at.y << " " << at.theta;
   }
-  PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-  CostTerms terms = two_tours_found();
-  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
   EXPECT_EQ(r.evicted, 1);
   const PreferenceReport after = check_preferences(scene, model, poses);
   EXPECT_EQ(after.met, 2);

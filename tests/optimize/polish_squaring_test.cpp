@@ -30,6 +30,7 @@ using geometry::Vec2;
 using testing::exact_hooks;
 using testing::movable_of;
 using testing::poses_of;
+using testing::polish_all_found;
 using testing::two_tours_found;
 using testing::violation_at;
 
@@ -83,10 +84,7 @@ TEST(Polish, SquaresAnObjectToItsWallKeepingItsGap) {
     std::vector<Pose2> poses = poses_of(scene);
     ASSERT_EQ(check_preferences(scene, model, poses).met, 1) << shelf;
     geometry::Scene scratch = scene;
-    PolishHooks hooks = exact_hooks(scratch);
-    hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-    CostTerms terms = two_tours_found();
-    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+    const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
     EXPECT_EQ(check_preferences(scene, model, poses).met, 1) << shelf;
     if (shelf) {
       EXPECT_EQ(r.squared, 0);

@@ -89,4 +89,16 @@ inline PolishHooks exact_hooks(geometry::Scene& scratch) {
   return hooks;
 }
 
+//! Polishes `poses` (at most 50 plannings) with the exact checks on
+//! `scratch` and a planner that finds both tours of every layout.
+inline PolishResult polish_all_found(const geometry::Scene& scene, const CostModel& model,
+                                     const std::vector<bool>& movable,
+                                     std::vector<geometry::Pose2>& poses,
+                                     geometry::Scene& scratch) {
+  PolishHooks hooks = exact_hooks(scratch);
+  hooks.plan = [](const std::vector<geometry::Pose2>&) { return two_tours_found(); };
+  CostTerms terms = two_tours_found();
+  return polish(scene, model, movable, poses, terms, hooks, 50);
+}
+
 }  // namespace hrs::optimize::testing

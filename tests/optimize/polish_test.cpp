@@ -37,6 +37,7 @@ using testing::bounded_model;
 using testing::exact_hooks;
 using testing::movable_of;
 using testing::poses_of;
+using testing::polish_all_found;
 using testing::two_tours_found;
 using testing::violation_at;
 // The polish's score (optimize/polish.cpp), recomputed here from the report.
@@ -211,10 +212,7 @@ TEST(Polish, TurnsAGroupAsOneBodyForAMembersWallAngle) {
   ASSERT_EQ(before.met, 2);
   ASSERT_NEAR(before.worst_angle, std::numbers::pi / 2, 1e-9);
   geometry::Scene scratch = scene;
-  PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-  CostTerms terms = two_tours_found();
-  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
   EXPECT_EQ(r.turned, 1);
   EXPECT_EQ(r.kept, 0);
   const PreferenceReport after = check_preferences(scene, model, poses);
@@ -274,10 +272,7 @@ TEST(Polish, AnObjectThatNoLongerFitsOnceTurnedIsNudged) {
   turned.objects[0].pose.theta = std::numbers::pi / 2;
   ASSERT_NE(object_violation(turned, 0), "");
   geometry::Scene scratch = scene;
-  PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-  CostTerms terms = two_tours_found();
-  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
   EXPECT_EQ(r.kept, 1);
   EXPECT_EQ(r.turned, 0);
   EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
@@ -321,10 +316,7 @@ TEST(Polish, TurnsInPlaceWhereNoSpotAtItsWallIsFree) {
   ASSERT_EQ(before.met, 0);
   ASSERT_NEAR(before.worst_angle, std::numbers::pi / 2, 1e-9);
   geometry::Scene scratch = scene;
-  PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-  CostTerms terms = two_tours_found();
-  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
   EXPECT_EQ(r.kept, 1);
   EXPECT_EQ(r.slid + r.swapped + r.turned, 0);
   EXPECT_EQ(poses[0].position(), scene.objects[0].pose.position());
@@ -347,10 +339,7 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
   std::vector<Pose2> poses = poses_of(scene);
   ASSERT_EQ(check_preferences(scene, model, poses).met, 0);
   geometry::Scene scratch = scene;
-  PolishHooks hooks = exact_hooks(scratch);
-  hooks.plan = [](const std::vector<Pose2>&) { return two_tours_found(); };
-  CostTerms terms = two_tours_found();
-  const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+  const PolishResult r = polish_all_found(scene, model, movable, poses, scratch);
   EXPECT_EQ(r.swapped, 1);
   EXPECT_EQ(r.slid, 0);
   EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
