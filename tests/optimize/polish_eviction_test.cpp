@@ -2,18 +2,22 @@
 // The polish's evictions (optimize/polish.h): on built rooms, a place that
 // mends a gross angle miss freed by moving its holder, kept at a higher
 // cost but not at a lost tour; a free object moved round its relation
-// partner; an eviction that takes the object's side of its relations
-// along; and the last pass, which frees a held place for a
-// miss that is not an angle, kept only at no higher total cost. The other
-// moves' tests: polish_test.cpp and polish_squaring_test.cpp.
+// partner; a gross miss's second four places, planned beyond the budget,
+// fewest blocked tour footprints first; an eviction that takes the
+// object's side of its relations along; and the last pass, which frees a
+// held place for a miss that is not an angle, kept only at no higher total
+// cost. The other moves' tests: polish_test.cpp and polish_squaring_test.cpp.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
 #include "geometry/polygon_ops.h"
+#include "optimize/arrange.h"
 #include "optimize/design.h"
 #include "optimize/polish.h"
 #include "optimize/preferences.h"
@@ -224,6 +228,57 @@ TEST(Polish, AGrossMissesEvictionPlansFourMorePlacesBeyondTheBudget) {
     }
     EXPECT_EQ(terms.tours_found, 2);
   }
+}
+
+// The same room with tours whose chair footprints ring the bed at the
+// lamp's distance, 2 cm apart on the bed's left half and 20 cm apart on its
+// right half, so that every place round the bed stands in the tours' way,
+// those on the right near fewer footprints. A planner that loses a tour on
+// every layout shows the order: the first four places planned are the
+// nearest (the lamp stands on the left); the next four are taken by how
+// few footprints they come near (TourCorridor::blocked, counted here
+// independently), the first of them fewer than any of the first four.
+TEST(Polish, AGrossMissesSecondFourTakeTheFewestBlockedFirst) {
+  const geometry::Scene scene = lamp_scene();
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  std::vector<Pose2> poses = poses_of(scene);
+  std::vector<planning::Tour> tours(1);
+  tours[0].found = true;
+  planning::Leg leg;
+  for (double a = 0.0; a < 2 * std::numbers::pi; a += (std::cos(a) < 0.0 ? 0.02 : 0.2) / 1.5)
+    leg.waypoints.push_back({2.5 + 1.5 * std::cos(a), 2.0 + 1.5 * std::sin(a), a + std::numbers::pi / 2});
+  tours[0].legs.push_back(leg);
+  const TourCorridor corridor(scene.wheelchair, tours);
+  geometry::Scene scratch = scene;
+  PolishHooks hooks = exact_hooks(scratch);
+  hooks.tours = [&]() -> const std::vector<planning::Tour>& { return tours; };
+  std::vector<Pose2> lamp_planned;
+  hooks.plan = [&](const std::vector<Pose2>& p) {
+    lamp_planned.push_back(p[1]);
+    CostTerms t = two_tours_found();
+    t.tours_found = 1;
+    return t;
+  };
+  CostTerms terms = two_tours_found();
+  polish(scene, model, movable, poses, terms, hooks, 50);
+  ASSERT_GE(lamp_planned.size(), 8u);
+  const auto blocked = [&](const Pose2& at) {
+    geometry::Object o = scene.objects[1];
+    o.pose = at;
+    return corridor.blocked(geometry::world_footprint(o));
+  };
+  std::size_t first_four = SIZE_MAX;
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_LT(lamp_planned[static_cast<std::size_t>(k)].x, 2.5) << k;  // nearest: the left
+    first_four = std::min(first_four, blocked(lamp_planned[static_cast<std::size_t>(k)]));
+  }
+  EXPECT_GT(first_four, 0u);
+  EXPECT_LT(blocked(lamp_planned[4]), first_four);
+  for (int k = 5; k < 8; ++k)
+    EXPECT_LE(blocked(lamp_planned[static_cast<std::size_t>(k - 1)]),
+              blocked(lamp_planned[static_cast<std::size_t>(k)])) << k;
+  EXPECT_EQ(poses, poses_of(scene));
 }
 
 //! The room of the final pass's test below: a sofa on the top wall wants

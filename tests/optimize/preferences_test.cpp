@@ -222,9 +222,17 @@ TEST(Preferences, RelationSlidesMeetTheirRelationOnRandomLayouts) {
       p[0] = {w * u(rng), h * u(rng), 2 * kPi * u(rng)};
       p[1] = {w * u(rng), h * u(rng), 2 * kPi * u(rng)};
       const auto slides = relation_slides(s, p, object, 0.2);
-      // At least eight places where the circle is inside the room, about
-      // 0.2 m apart along it, nearest the current position first.
+      // About 0.2 m apart along the circle (at most ceil(2πd / 0.2) places,
+      // fewer where the circle leaves the room's box; d >= 0.5 m gives at
+      // least 16), nearest the current position first.
       EXPECT_LE(slides.size(), static_cast<std::size_t>(std::ceil(2 * kPi * d / 0.2)));
+      for (std::size_t k = 1; k < slides.size(); ++k) {
+        // Neighbouring places on the circle are one step apart or more.
+        double gap = 1e300;
+        for (std::size_t m = 0; m < slides.size(); ++m)
+          if (m != k) gap = std::min(gap, geometry::norm(slides[m].position() - slides[k].position()));
+        EXPECT_GT(gap, 0.9 * 2 * d * std::sin(kPi / std::ceil(2 * kPi * d / 0.2)));
+      }
       for (std::size_t k = 1; k < slides.size(); ++k)
         EXPECT_LE(geometry::norm(slides[k - 1].position() - p[object].position()),
                   geometry::norm(slides[k].position() - p[object].position()));
@@ -261,8 +269,14 @@ TEST(Preferences, RelationSlidesAreEmptyForAWallObjectOrWithoutADistance) {
   EXPECT_TRUE(relation_slides(s, p, 0, 0.2).empty());
   EXPECT_FALSE(relation_slides(s, p, 2, 0.2).empty());
   EXPECT_FALSE(relation_slides(s, p, 1, 0.2).empty());
+  EXPECT_FALSE(relation_slides(s, p, 4, 0.2).empty());
   EXPECT_TRUE(relation_slides(s, p, 3, 0.2).empty());
   EXPECT_TRUE(relation_slides(s, p, 2, 0.0).empty());
+  // A relation with an angle and no distance gives no circle.
+  Scene no_distance = s;
+  no_distance.relations = {{"tv", "bed", std::nullopt, kPi}};
+  EXPECT_TRUE(relation_slides(no_distance, p, 2, 0.2).empty());
+  EXPECT_TRUE(relation_slides(no_distance, p, 1, 0.2).empty());
 }
 
 TEST(Preferences, GroupTurnsMeetEveryRelationAngleOfAConsistentGroup) {
