@@ -96,11 +96,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // The kept layout's tour corridor (optimize/arrange.h), rebuilt on a keep.
   std::optional<TourCorridor> corridor;
   if (hooks.tours) corridor.emplace(scene.wheelchair, hooks.tours());
-  const auto clear = [&](int object, const geometry::Pose2& to) {
-    if (!corridor) return true;
+  // Object `object`'s footprint at `to`.
+  const auto footprint_at = [&](int object, const geometry::Pose2& to) {
     geometry::Object o = scene.objects[static_cast<std::size_t>(object)];
     o.pose = to;
-    return corridor->clear(geometry::world_footprint(o));
+    return geometry::world_footprint(o);
+  };
+  const auto clear = [&](int object, const geometry::Pose2& to) {
+    return !corridor || corridor->clear(footprint_at(object, to));
   };
   // Keeps the placed and planned layout `q` (terms `t`, preference report
   // `met`).
@@ -231,17 +234,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // the kept tours' chair footprints they come near (TourCorridor::blocked)
   // rather than in the order found.
   // With `own`, the plannings are counted in `own_tries`, beyond
-  // `max_tries`.
+  // `max_tries`. `planned` is how many the last call planned.
+  std::size_t planned = 0;
   const auto try_best = [&](std::vector<Candidate>& candidates, std::size_t tries,
                             bool no_costlier, bool by_blocked = false, bool own = false) {
     for (Candidate& c : candidates) {
       c.blocked = 0;
       if (!by_blocked || c.clear || !corridor) continue;
-      for (const auto& [k, pose] : c.move) {
-        geometry::Object o = scene.objects[static_cast<std::size_t>(k)];
-        o.pose = pose;
-        c.blocked += corridor->blocked(geometry::world_footprint(o));
-      }
+      for (const auto& [k, pose] : c.move) c.blocked += corridor->blocked(footprint_at(k, pose));
     }
     std::stable_sort(candidates.begin(), candidates.end(),
                      [](const Candidate& a, const Candidate& b) {
@@ -250,9 +250,10 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                        if (sa != sb) return sa > sb;
                        return a.blocked < b.blocked;
                      });
+    planned = 0;
     for (std::size_t k = 0; k < candidates.size() && k < tries; ++k) {
       if ((!own && out.tried - own_tries >= max_tries) || (stop && stop->load())) break;
-      ++out.tried;
+      ++out.tried, ++planned;
       if (own) ++own_tries;
       const bool capped = no_costlier && gross_misses(candidates[k].report) >= gross_misses(report);
       if (try_moves(candidates[k].move, candidates[k].report, capped)) return true;
@@ -407,13 +408,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       }
     }
     if (!try_best(evictions, kEvictTries, true)) {
-      // For a gross miss, the next few of those not yet planned, fewest
-      // blocked footprints first: the places found first (preferred poses,
-      // the nearest slides) can all stand in the tours' way, where a place
-      // farther round (a lamp at the bed's far corner) leaves them be. An
-      // allowance of its own: the moves before may have spent the budget.
-      if (!gross || evictions.size() <= kEvictTries) return false;
-      evictions.erase(evictions.begin(), evictions.begin() + kEvictTries);
+      // For a gross miss, four of those not yet planned, among equal scores
+      // fewest blocked footprints first: the places found first (preferred
+      // poses, the nearest slides) can all stand in the tours' way, where a
+      // place farther round (a lamp at the bed's far corner) leaves them
+      // be. An allowance of its own: the moves before may have spent the
+      // budget.
+      if (!gross || evictions.size() <= planned) return false;
+      evictions.erase(evictions.begin(), evictions.begin() + static_cast<std::ptrdiff_t>(planned));
       if (!try_best(evictions, kEvictTries, true, true, true)) return false;
     }
     ++out.kept, ++out.evicted;
@@ -423,7 +425,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // relation in the second.
   for (int pass = 0; pass < 2 && report.met < report.total; ++pass) {
     for (std::size_t i = 0; i < poses.size(); ++i) {
-      if (!movable[i] || out.tried >= max_tries || (stop && stop->load())) continue;
+      if (!movable[i] || out.tried - own_tries >= max_tries || (stop && stop->load())) continue;
       const std::string& id = scene.objects[i].id;
       const bool unmet = std::any_of(
           report.checks.begin(), report.checks.end(),
@@ -442,7 +444,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         wanted.push_back({poses[i].x, poses[i].y, geometry::wrap_angle(normal + *o.wall->angle)});
       }
       for (geometry::Pose2 to : wanted) {
-        if (out.tried >= max_tries || (stop && stop->load())) break;
+        if (out.tried - own_tries >= max_tries || (stop && stop->load())) break;
         std::vector<geometry::Pose2> p = poses;
         p[i] = to;
         if (!hooks.valid(p, object) && !nudge(p, object, to)) continue;
@@ -474,7 +476,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
           break;
         }
       }
-      if (kept || out.tried >= max_tries || (stop && stop->load())) continue;
+      if (kept || out.tried - own_tries >= max_tries || (stop && stop->load())) continue;
       // The spots straight across are taken: slide along the walls.
       std::vector<Candidate> slides;
       for (const geometry::Pose2& to : wall_slides(scene, model, poses, object, kWallSlideStep)) {
@@ -489,7 +491,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         ++out.kept, ++out.slid;
         continue;
       }
-      if (out.tried >= max_tries || (stop && stop->load())) continue;
+      if (out.tried - own_tries >= max_tries || (stop && stop->load())) continue;
       // Every place it could take is held: exchange places with another
       // movable object (swaps()). Kept only when the total cost is not
       // higher, or when it mends a gross angle miss: two objects moved at
@@ -514,7 +516,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
         continue;
       }
       // A heading still grossly off (> 20°): free a place that mends it.
-      if (out.tried >= max_tries || (stop && stop->load()) || !grossly_off(report, id)) continue;
+      if (out.tried - own_tries >= max_tries || (stop && stop->load()) || !grossly_off(report, id)) continue;
       evict(i);
     }
   }
@@ -532,7 +534,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       });
     };
     for (GroupMove move : group_turns(scene, model, poses, movable, group)) {
-      if (!unmet() || out.tried >= max_tries || (stop && stop->load())) break;
+      if (!unmet() || out.tried - own_tries >= max_tries || (stop && stop->load())) break;
       std::vector<Candidate> turns;
       for (GroupMove& placed : placements(poses, move)) {
         std::vector<geometry::Pose2> q = poses;

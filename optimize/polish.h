@@ -18,9 +18,10 @@
 // freed: one or two movable objects holding such a place move to their own
 // wall places or preferred poses, or to the place the object leaves (an
 // eviction; the best four planned, kept at any cost when they score no
-// lower; when none keeps the tours, four more, those that come near the
-// fewest of the tours' chair footprints first, TourCorridor::blocked, with
-// an allowance of their own). A move is kept when the layout
+// lower; when none keeps the tours, four more not yet planned, among
+// equal scores those that come near the fewest of the tours' chair
+// footprints first, TourCorridor::blocked, with an allowance of their own).
+// A move is kept when the layout
 // is valid, every tour found before is still found (the tours are planned
 // again) and the preference score rises (an eviction's: does not fall,
 // and fewer angles are more than 20° off): preferences met, less one for

@@ -232,12 +232,7 @@ std::vector<Pose2> relation_slides(const geometry::Scene& scene, const std::vect
   const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
   if ((o.wall && o.wall->distance) || !(step > 0.0)) return out;
   const Pose2 now = pose_of(poses, object);
-  Vec2 lo{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-  Vec2 hi{-lo.x, -lo.y};
-  for (const Vec2& v : scene.room.polygon) {
-    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
-    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
-  }
+  const geometry::Box box = geometry::bounding_box(scene.room.polygon);
   std::vector<std::pair<double, Pose2>> ranked;
   for (const geometry::Relation& r : scene.relations) {
     const int a = scene.find_object(r.a), b = scene.find_object(r.b);
@@ -251,7 +246,7 @@ std::vector<Pose2> relation_slides(const geometry::Scene& scene, const std::vect
     for (int j = 0; j < n; ++j) {
       const double phi = 2.0 * std::numbers::pi * j / n;
       const Vec2 c{other.x + d * std::cos(phi), other.y + d * std::sin(phi)};
-      if (c.x < lo.x || c.x > hi.x || c.y < lo.y || c.y > hi.y) continue;
+      if (c.x < box.xmin || c.x > box.xmax || c.y < box.ymin || c.y > box.ymax) continue;
       double theta = now.theta;
       if (r.angle) theta = a == object ? other.theta + *r.angle : other.theta - *r.angle;
       if (r.faces && a == object) theta = std::atan2(other.y - c.y, other.x - c.x);

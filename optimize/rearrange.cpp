@@ -97,11 +97,7 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
     if (w->empty()) w = relation_slides(scene, poses, k, kWallSlideStep);
     return *w;
   };
-  geometry::Vec2 lo{1e300, 1e300}, hi{-1e300, -1e300};
-  for (const geometry::Vec2& v : scene.room.polygon) {
-    lo = {std::min(lo.x, v.x), std::min(lo.y, v.y)};
-    hi = {std::max(hi.x, v.x), std::max(hi.y, v.y)};
-  }
+  const geometry::Box box = geometry::bounding_box(scene.room.polygon);
   // A place for object k (now at `now`): half the draws among its
   // `preferred` poses, half among its wall places (or places round its
   // partners) and `extra` (when given). An object with none of these (no
@@ -117,8 +113,8 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
       // Uniform in the disc of kAsideRadius round it, in the room's box.
       const double r = kAsideRadius * std::sqrt(uniform01(rng));
       const double a = 2.0 * std::numbers::pi * uniform01(rng);
-      return geometry::Pose2{std::clamp(now.x + r * std::cos(a), lo.x, hi.x),
-                             std::clamp(now.y + r * std::sin(a), lo.y, hi.y), now.theta};
+      return geometry::Pose2{std::clamp(now.x + r * std::cos(a), box.xmin, box.xmax),
+                             std::clamp(now.y + r * std::sin(a), box.ymin, box.ymax), now.theta};
     }
     const std::size_t others = walls.size() + (extra ? 1 : 0);
     if (preferred.empty() && others == 0) return std::nullopt;

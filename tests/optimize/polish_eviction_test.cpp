@@ -3,7 +3,9 @@
 // mends a gross angle miss freed by moving its holder, kept at a higher
 // cost but not at a lost tour; a free object moved round its relation
 // partner; a gross miss's second four places, planned beyond the budget,
-// fewest blocked tour footprints first; an eviction that takes the
+// fewest blocked tour footprints first, from the first place a short
+// budget left unplanned, and leaving the budget to the objects after; an
+// eviction that takes the
 // object's side of its relations along; and the last pass, which frees a
 // held place for a miss that is not an angle, kept only at no higher total
 // cost. The other moves' tests: polish_test.cpp and polish_squaring_test.cpp.
@@ -228,6 +230,84 @@ TEST(Polish, AGrossMissesEvictionPlansFourMorePlacesBeyondTheBudget) {
     }
     EXPECT_EQ(terms.tours_found, 2);
   }
+}
+
+// The lamp room with a budget of two plannings: the first round plans its
+// two best places only, and the second round starts at the third (the
+// places the budget cut short are not skipped). With no corridor every
+// place has the same rank, so a planner that refuses every layout sees
+// the places in the order of an unbounded budget.
+TEST(Polish, AGrossMissesSecondRoundTakesThePlacesTheBudgetCutShort) {
+  const geometry::Scene scene = lamp_scene();
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  const auto planned_with = [&](int budget) {
+    std::vector<Pose2> poses = poses_of(scene);
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    std::vector<Pose2> lamp;
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      lamp.push_back(p[1]);
+      CostTerms t = two_tours_found();
+      t.tours_found = 1;
+      return t;
+    };
+    CostTerms terms = two_tours_found();
+    polish(scene, model, movable, poses, terms, hooks, budget);
+    EXPECT_EQ(poses, poses_of(scene));
+    return lamp;
+  };
+  const std::vector<Pose2> unbounded = planned_with(1000);
+  const std::vector<Pose2> cut = planned_with(2);
+  ASSERT_GE(unbounded.size(), 6u);
+  ASSERT_GE(cut.size(), 6u);  // two of the budget, four of its own (then the rearrangement's)
+  for (std::size_t k = 0; k < 6; ++k) EXPECT_EQ(cut[k], unbounded[k]) << k;
+}
+
+// The lamp room with box_b wanting its back against the right wall (it
+// stands 10 cm off it). A planner that refuses every layout with the lamp
+// moved: the lamp's eviction plans its second four on an allowance of its
+// own, so box_b, after it in the pass, still finds the plannings the
+// budget has left, and meets its wall.
+TEST(Polish, AGrossMissesSecondFourLeaveTheBudgetToTheObjectsAfter) {
+  geometry::Scene scene = lamp_scene();
+  scene.objects[6].wall = geometry::WallPreference{0.0, 0.0};
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  const auto run = [&](int budget, std::vector<Pose2>& poses) {
+    poses = poses_of(scene);
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    std::vector<bool> lamp_moved;
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      lamp_moved.push_back(p[1] != scene.objects[1].pose);
+      CostTerms t = two_tours_found();
+      if (lamp_moved.back()) t.tours_found = 1;
+      return t;
+    };
+    CostTerms terms = two_tours_found();
+    polish(scene, model, movable, poses, terms, hooks, budget);
+    return lamp_moved;
+  };
+  const auto box_b_met = [&](const std::vector<Pose2>& poses) {
+    const PreferenceReport r = check_preferences(scene, model, poses);
+    return std::count_if(r.checks.begin(), r.checks.end(), [](const PreferenceCheck& c) {
+      return c.object == "box_b" && c.met;
+    });
+  };
+  std::vector<Pose2> poses;
+  ASSERT_EQ(box_b_met(poses_of(scene)), 1);  // its angle, not its distance
+  // Unbounded: the lamp's plannings before box_b's first.
+  const std::vector<bool> seen = run(1000, poses);
+  const auto first_box = std::find(seen.begin(), seen.end(), false);
+  ASSERT_NE(first_box, seen.end());
+  const int lamp_plans = static_cast<int>(first_box - seen.begin());
+  ASSERT_GE(lamp_plans, 8);  // its first four and its second four at least
+  EXPECT_EQ(box_b_met(poses), 2);
+  // The budget the lamp's first plannings spend, and one for box_b.
+  run(lamp_plans - 4 + 1, poses);
+  EXPECT_EQ(box_b_met(poses), 2);
+  EXPECT_EQ(poses[1], scene.objects[1].pose);
 }
 
 // The same room with tours whose chair footprints ring the bed at the
