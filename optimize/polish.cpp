@@ -563,23 +563,33 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // tours are likelier kept near the layout that found them. Each chain's
   // best layout with fewer gross misses and a score no lower is planned,
   // best first, and kept at any cost when every tour is still found.
-  if (gross_misses(report) > 0 && !(stop && stop->load())) {
-    RearrangeHooks rh;
-    rh.fits = hooks.fits ? hooks.fits : hooks.valid;
-    rh.valid = hooks.valid;
-    rh.clear = clear;
-    rh.seed = hooks.seed;
-    // Its own allowance of plannings (one per chain), beyond `max_tries`:
-    // the local moves above may have spent theirs.
-    for (Rearrangement& f : rearrangements(scene, model, movable, poses, report, rh, stop)) {
+  RearrangeHooks rh;
+  rh.fits = hooks.fits ? hooks.fits : hooks.valid;
+  rh.valid = hooks.valid;
+  rh.clear = clear;
+  rh.seed = hooks.seed;
+  // The chains' layouts for `goal`, planned best first with an allowance of
+  // their own (one per chain), beyond `max_tries`: the moves before them
+  // may have spent theirs. The first kept (at no higher total cost with
+  // `no_costlier`) ends it.
+  const auto rearrange = [&](RearrangeGoal goal, bool no_costlier) {
+    for (Rearrangement& f : rearrangements(scene, model, movable, poses, report, rh, stop, goal)) {
       if (stop && stop->load()) break;
       ++out.tried, ++own_tries;
-      if (try_moves(f.move, f.report)) {
+      if (try_moves(f.move, f.report, no_costlier)) {
         ++out.kept, ++out.rearranged;
         break;
       }
     }
-  }
+  };
+  if (gross_misses(report) > 0 && !(stop && stop->load()))
+    rearrange(RearrangeGoal::kFewerGross, false);
+  // Then the misses that need more objects moved than an eviction moves (a
+  // sofa wanted by a TV whose wall a bed and a cabinet hold): the chains
+  // again, for a higher score, each layout kept only when every tour is
+  // still found at no higher total cost, the rule of the exchanges.
+  if (report.met < report.total && !(stop && stop->load()))
+    rearrange(RearrangeGoal::kHigherScore, true);
   // Square to the room: an object whose heading no preference fixes is
   // turned parallel or perpendicular to its nearest wall (a lamp at 10°
   // looks wrong to a designer), when the layout stays valid, no preference

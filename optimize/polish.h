@@ -42,8 +42,12 @@
 // and a score no lower, near the kept one and clear of its tours'
 // corridor; each chain's best is planned (its own allowance, one planning
 // per chain, not counted against `max_tries`) and the first that keeps
-// every tour is kept at any cost. An eviction can also take the object's other relation
-// partners along, moved rigidly with it.
+// every tour is kept at any cost. Then, when a preference is still unmet,
+// the same chains look for a layout with a higher score and no more gross
+// misses (RearrangeGoal::kHigherScore: a sofa whose place by the TV two
+// cabinets hold), planned on the same allowance and kept only at no
+// higher total cost. An eviction can also take the object's other
+// relation partners along, moved rigidly with it.
 // Then each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered):
 // turned in place, or slid along the wall's normal to keep its gap to the

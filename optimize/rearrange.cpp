@@ -72,10 +72,16 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
                                           const std::vector<geometry::Pose2>& poses,
                                           const PreferenceReport& report,
                                           const RearrangeHooks& hooks,
-                                          const std::atomic<bool>* stop) {
+                                          const std::atomic<bool>* stop, RearrangeGoal goal) {
   std::vector<Rearrangement> found;
   const int gross0 = gross_misses(report), score0 = polish_score(report);
-  if (gross0 == 0) return found;
+  const bool fewer_gross = goal == RearrangeGoal::kFewerGross;
+  if (fewer_gross ? gross0 == 0 : report.met == report.total) return found;
+  // Whether a layout with report `r` meets the goal.
+  const auto meets = [&](const PreferenceReport& r) {
+    return fewer_gross ? gross_misses(r) < gross0 && polish_score(r) >= score0
+                       : polish_score(r) > score0 && gross_misses(r) <= gross0;
+  };
   std::vector<int> free_objects;
   for (std::size_t i = 0; i < poses.size(); ++i)
     if (movable[i]) free_objects.push_back(static_cast<int>(i));
@@ -195,7 +201,7 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
       if (!changed.empty() && !hooks.valid(next, changed.front().first)) continue;
       for (const auto& [k, c] : changed) moved[static_cast<std::size_t>(k)] = c;
       q = std::move(next), rq = std::move(rn), eq = en, travel = travel_next;
-      if (gross_misses(rq) < gross0 && polish_score(rq) >= score0 && (!best || eq < best->energy)) {
+      if (meets(rq) && (!best || eq < best->energy)) {
         GroupMove move;
         for (const int k : free_objects)
           if (q[static_cast<std::size_t>(k)] != poses[static_cast<std::size_t>(k)])

@@ -1,11 +1,12 @@
 #pragma once
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Rearrangements: the polish's search over the preferences alone, for
-// angles still grossly off once no single move mends them (docs/optimize.md
-// "Preferences"). A bed that holds the only wall a desk can share with its
-// wardrobe has to move to another wall, and the dresser that stands by the
-// bed has to follow it: moves that raise the score only together, which no
-// one- or two-object move of the polish finds.
+// angles still grossly off once no single move mends them, and then for any
+// preference still unmet (docs/optimize.md "Preferences"). A bed that holds
+// the only wall a desk can share with its wardrobe has to move to another
+// wall, and the dresser that stands by the bed has to follow it: moves that
+// raise the score only together, which no one- or two-object move of the
+// polish finds.
 //
 // Each chain is a Metropolis walk (Metropolis et al. 1953, the acceptance
 // rule min(1, exp(-dE/T))) over valid layouts, with a geometric cooling
@@ -68,6 +69,16 @@ struct RearrangeHooks {
   std::uint64_t seed = 0;
 };
 
+//! What a chain's best layout must achieve against the layout searched from.
+enum class RearrangeGoal {
+  //! Fewer angles grossly off, at a score no lower (kept at any cost).
+  kFewerGross,
+  //! A higher score, with no more angles grossly off (kept only at no
+  //! higher total cost): the misses no one- to three-object move of the
+  //! polish mends, a distance among them.
+  kHigherScore,
+};
+
 //! One chain's best layout: the moves from the layout searched from, its
 //! preference report and its energy.
 struct Rearrangement {
@@ -77,14 +88,16 @@ struct Rearrangement {
 };
 
 //! Runs the chains from `poses` (whose preference report is `report`) and
-//! returns each chain's best layout that has fewer gross misses and a score
-//! no lower, distinct ones only, lowest energy first; empty when `report`
-//! has no gross miss. `stop` (may be null) ends the chains early.
+//! returns each chain's best layout that meets `goal`, distinct ones only,
+//! lowest energy first; empty when `report` has nothing to mend (no gross
+//! miss for kFewerGross, no unmet preference for kHigherScore). `stop` (may
+//! be null) ends the chains early.
 std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const CostModel& model,
                                           const std::vector<bool>& movable,
                                           const std::vector<geometry::Pose2>& poses,
                                           const PreferenceReport& report,
                                           const RearrangeHooks& hooks,
-                                          const std::atomic<bool>* stop = nullptr);
+                                          const std::atomic<bool>* stop = nullptr,
+                                          RearrangeGoal goal = RearrangeGoal::kFewerGross);
 
 }  // namespace hrs::optimize

@@ -5,10 +5,11 @@
 // partner; a gross miss's second four places, planned beyond the budget,
 // fewest blocked tour footprints first, from the first place a short
 // budget left unplanned, and leaving the budget to the objects after; an
-// eviction that takes the
-// object's side of its relations along; and the last pass, which frees a
-// held place for a miss that is not an angle, kept only at no higher total
-// cost. The other moves' tests: polish_test.cpp and polish_squaring_test.cpp.
+// eviction that takes the object's side of its relations along; the last
+// pass, which frees a held place for a miss that is not an angle, kept only
+// at no higher total cost; and the chains for a higher score where two
+// holders must leave. The other moves' tests: polish_test.cpp and
+// polish_squaring_test.cpp.
 
 #include <gtest/gtest.h>
 
@@ -224,8 +225,10 @@ TEST(Polish, AGrossMissesEvictionPlansFourMorePlacesBeyondTheBudget) {
       EXPECT_EQ(violation_at(scratch, poses), "");
     } else {
       EXPECT_EQ(r.kept, 0);
+      // The eviction's 4 + 4, then at most one layout per chain (8) of
+      // each rearrangement (fewer gross misses; a higher score).
       EXPECT_GE(calls, 8);
-      EXPECT_LE(calls, 8 + 8);
+      EXPECT_LE(calls, 8 + 8 + 8);
       EXPECT_EQ(poses, poses_of(scene));
     }
     EXPECT_EQ(terms.tours_found, 2);
@@ -443,6 +446,88 @@ TEST(Polish, LastPassFreesAHeldPlaceForAMissThatIsNotAnAngle) {
     EXPECT_NEAR(poses[1].x, 4.6, 1e-9);
     EXPECT_NEAR(std::abs(geometry::wrap_angle(poses[1].theta)), std::numbers::pi, 1e-9);
     EXPECT_EQ(poses[2], sofa_was);
+    EXPECT_EQ(violation_at(scratch, poses), "");
+  }
+}
+
+// The held wall again, now held by three movable cabinets of 1 m between
+// fixed blocks in the right wall's corners: every place of the sofa there
+// overlaps two of them. An eviction moves one holder to the place the
+// sofa leaves and finds none for the second (the cabinets have no
+// preference, hence no places of their own); an exchange leaves the sofa
+// touching a neighbour. The rearrangement's chains for a higher score
+// move the sofa and both holders, the second aside, and the layout is
+// kept when the tours cost no more; when any layout with the sofa on the
+// right wall costs more, or loses a tour, nothing is kept.
+TEST(Polish, RearrangesForAHigherScoreWhenTwoHoldersMustLeave) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "two holders",
+    "room": {"size": [5, 4]},
+    "door": {"center": [2.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "tv", "size": [0.4, 1.2], "pose": [0.2, 2.0, 0], "fixed": true},
+      {"id": "sofa", "size": [0.8, 1.6], "pose": [2.5, 3.6, -1.5707963267948966],
+       "wall": {"distance": 0, "angle": 0}},
+      {"id": "cab_a", "size": [0.6, 1.0], "pose": [4.7, 1.0, 3.141592653589793]},
+      {"id": "cab_b", "size": [0.6, 1.0], "pose": [4.7, 2.0, 3.141592653589793]},
+      {"id": "cab_c", "size": [0.6, 1.0], "pose": [4.7, 3.0, 3.141592653589793]},
+      {"id": "corner_low", "size": [0.5, 0.5], "pose": [4.75, 0.25, 0], "fixed": true},
+      {"id": "corner_high", "size": [0.5, 0.5], "pose": [4.75, 3.75, 0], "fixed": true}
+    ],
+    "relations": [{"a": "sofa", "b": "tv", "distance": 4.4}],
+    "activity": {"transitions": {"door": {"sofa": 1.0}, "sofa": {"cab_a": 1.0},
+                                 "cab_a": {"sofa": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "two holders");
+  ASSERT_EQ(layout_violation(scene), "");
+  const CostModel model = bounded_model(scene);
+  const std::vector<bool> movable = movable_of(scene);
+  {
+    const PreferenceReport before = check_preferences(scene, model, poses_of(scene));
+    ASSERT_EQ(before.total, 3);
+    ASSERT_EQ(before.met, 2);
+    ASSERT_EQ(polish_gross(before), 0);
+  }
+  enum class Planner { kSameCost, kRightWallCostlier, kRightWallLosesATour };
+  for (const Planner planner :
+       {Planner::kSameCost, Planner::kRightWallCostlier, Planner::kRightWallLosesATour}) {
+    std::vector<Pose2> poses = poses_of(scene);
+    const std::vector<Pose2> input = poses;
+    geometry::Scene scratch = scene;
+    PolishHooks hooks = exact_hooks(scratch);
+    int planned = 0;
+    hooks.plan = [&](const std::vector<Pose2>& p) {
+      ++planned;
+      CostTerms t = two_tours_found();
+      t.path_length = 1.0;
+      if (p[1].x > 4.0 && planner == Planner::kRightWallCostlier) t.path_length = 1.5;
+      if (p[1].x > 4.0 && planner == Planner::kRightWallLosesATour) t.tours_found = 1;
+      return t;
+    };
+    int kept_calls = 0;
+    hooks.kept = [&] { ++kept_calls; };
+    CostTerms terms = two_tours_found();
+    terms.path_length = 1.0;
+    const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 50);
+    EXPECT_EQ(r.tried, planned);
+    EXPECT_EQ(kept_calls, r.kept + r.squared);
+    EXPECT_EQ(r.evicted, 0);
+    EXPECT_EQ(r.swapped, 0);
+    if (planner != Planner::kSameCost) {
+      EXPECT_GE(planned, 1);  // a rearrangement, at least, was planned and refused
+      EXPECT_EQ(r.kept, 0);
+      EXPECT_EQ(poses, input);
+      EXPECT_EQ(terms.path_length, 1.0);
+      continue;
+    }
+    EXPECT_EQ(r.rearranged, 1);
+    EXPECT_EQ(r.kept, 1);
+    EXPECT_EQ(check_preferences(scene, model, poses).met, 3);
+    EXPECT_GT(poses[1].x, 4.0);  // the sofa against the right wall
+    int moved = 0;  // the sofa and at least two cabinets
+    for (std::size_t i = 1; i <= 4; ++i) moved += poses[i] != input[i];
+    EXPECT_GE(moved, 3);
     EXPECT_EQ(violation_at(scratch, poses), "");
   }
 }
