@@ -373,7 +373,8 @@ TEST(DesignLoop, LargeClearanceWeightWidensTheToursCorridors) {
   // runs from a layout whose objects it took to the walls whatever the path
   // weights (with it, the corridors are as wide at weight 0, and 4 seeds
   // tell nothing), and without the final arrangement and polish, which move
-  // objects for the preferences after the annealing.
+  // objects for the preferences after the annealing (the preference terms
+  // are then the paper's squared ones).
   const Scene office = shipped("office.json");
   double narrowest[2] = {0, 0}, deficit[2] = {0, 0};
   int found[2] = {0, 0};

@@ -350,7 +350,8 @@ TEST(Polish, ExchangesPlacesWhenTheWantedPlaceIsHeld) {
 
 // The same room, but the planner stands in for one whose tours through the
 // exchanged desks are longer: the exchange meets the relation, but costs
-// more, so it is not kept, and neither is the last pass's eviction.
+// more, so it is not kept, and neither is the last pass's eviction nor a
+// rearrangement for a higher score.
 TEST(Polish, KeepsNoExchangeThatRaisesTheTotalCost) {
   const geometry::Scene scene = desks_scene();
   const CostModel model = bounded_model(scene);
