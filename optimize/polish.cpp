@@ -12,6 +12,7 @@
 #include "optimize/arrange.h"
 #include "optimize/preferences.h"
 #include "optimize/rearrange.h"
+#include "optimize/squaring.h"
 
 namespace hrs::optimize {
 
@@ -28,19 +29,6 @@ std::vector<int> partners(const geometry::Scene& scene, int object) {
   }
   std::sort(out.begin(), out.end());
   return out;
-}
-
-//! True when a preference fixes the object's heading: a wall angle, a
-//! relation angle, or facing a partner.
-bool heading_fixed(const geometry::Scene& scene, int object) {
-  const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
-  if (o.wall && o.wall->angle) return true;
-  for (const geometry::Relation& r : scene.relations) {
-    const int a = scene.find_object(r.a), b = scene.find_object(r.b);
-    if (r.angle && (a == object || b == object)) return true;
-    if (r.faces && a == object) return true;
-  }
-  return false;
 }
 
 //! The objects at the other end of `id`'s grossly missed angle preferences.
@@ -81,9 +69,6 @@ constexpr std::size_t kTurnTries = 2;
 //! much (metres), in rings this far apart.
 constexpr double kNudge = 0.3;
 constexpr double kNudgeStep = 0.1;
-
-//! Headings this close to square (radians, about 0.06°) are left alone.
-constexpr double kSquareTolerance = 1e-3;
 
 }  // namespace
 
@@ -571,12 +556,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // The chains' layouts for `goal`, planned best first with an allowance of
   // their own (one per chain), beyond `max_tries`: the moves before them
   // may have spent theirs. The first kept (at no higher total cost with
-  // `no_costlier`) ends it.
+  // `no_costlier`, unless it has fewer gross misses) ends it.
   const auto rearrange = [&](RearrangeGoal goal, bool no_costlier) {
     for (Rearrangement& f : rearrangements(scene, model, movable, poses, report, rh, stop, goal)) {
       if (stop && stop->load()) break;
       ++out.tried, ++own_tries;
-      if (try_moves(f.move, f.report, no_costlier)) {
+      // One that also mends a gross miss is kept at any cost, as the
+      // fewer gross misses' are.
+      if (try_moves(f.move, f.report, no_costlier && gross_misses(f.report) >= gross_misses(report))) {
         ++out.kept, ++out.rearranged;
         break;
       }
@@ -587,7 +574,8 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // Then the misses that need more objects moved than an eviction moves (a
   // sofa wanted by a TV whose wall a bed and a cabinet hold): the chains
   // again, for a higher score, each layout kept only when every tour is
-  // still found at no higher total cost, the rule of the exchanges.
+  // still found at no higher total cost, or at any cost when it also has
+  // fewer gross misses: the rule of the exchanges.
   if (report.met < report.total && !(stop && stop->load()))
     rearrange(RearrangeGoal::kHigherScore, true);
   // Square to the room: an object whose heading no preference fixes is
@@ -611,54 +599,9 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     if (!movable[i] || heading_fixed(scene, object) || out.tried - own_tries >= max_tries ||
         (stop && stop->load()))
       continue;
-    const int wall = model.nearest_wall(object, poses[i]);
-    const double normal = model.wall_normal_angle(wall);
-    const double off = geometry::wrap_angle(poses[i].theta - normal);
-    const double quarter = std::numbers::pi / 2;
-    const double nearest = std::round(off / quarter);
-    if (std::abs(off - nearest * quarter) < kSquareTolerance) continue;
-    // Quarter turns from the wall's normal, nearest `off` first (a tie, an
-    // object at 45°, keeps the order below: the lower multiple of 90°).
-    std::vector<double> squares;
-    for (int k = -2; k <= 1; ++k) squares.push_back(k * quarter);
-    std::stable_sort(squares.begin(), squares.end(), [&](double a, double b) {
-      return std::abs(geometry::wrap_angle(off - a)) < std::abs(geometry::wrap_angle(off - b));
-    });
-    // The footprint's reach towards the wall: the least signed distance of
-    // its corners from the wall's line, negative beyond it (a quarter turn
-    // can push a long object through the wall, which a clamped distance
-    // would not show).
-    const geometry::Vec2 wall_at = scene.room.polygon[static_cast<std::size_t>(wall)];
-    const geometry::Vec2 inward{std::cos(normal), std::sin(normal)};
-    const auto gap = [&](const geometry::Pose2& at) {
-      geometry::Object o = scene.objects[i];
-      o.pose = at;
-      double reach = std::numeric_limits<double>::infinity();
-      for (const geometry::Vec2& c : geometry::world_footprint(o))
-        reach = std::min(reach, (c.x - wall_at.x) * inward.x + (c.y - wall_at.y) * inward.y);
-      return reach;
-    };
-    const double gap_was = gap(poses[i]);
-    // The first of the object turned in place and slid to keep its gap, at
-    // `square` from the wall's normal, that is valid and loses no
-    // preference.
-    const auto candidate = [&](double square) -> std::optional<std::pair<geometry::Pose2, PreferenceReport>> {
-      geometry::Pose2 turned = poses[i];
-      turned.theta = geometry::wrap_angle(normal + square);
-      const double shift = gap(turned) - gap_was;  // > 0: the turn took it off the wall
-      std::vector<geometry::Pose2> tries{turned};
-      if (std::abs(shift) > 1e-9)
-        tries.push_back(
-            {turned.x - shift * std::cos(normal), turned.y - shift * std::sin(normal), turned.theta});
-      for (const geometry::Pose2& to : tries) {
-        std::vector<geometry::Pose2> p = poses;
-        p[i] = to;
-        if (!hooks.valid(p, object)) continue;
-        PreferenceReport next = check_preferences(scene, model, p);
-        if (polish_score(next) >= polish_score(report)) return std::pair{to, std::move(next)};
-      }
-      return std::nullopt;
-    };
+    // The square headings, each turned in place or slid to keep its gap to
+    // the wall, valid and losing no preference (optimize/squaring.h).
+    std::vector<SquarePlace> squares = square_places(scene, model, poses, object, report, hooks.valid);
     // Whether `n` more plannings fit in the budget.
     const auto budget_left = [&](int n = 1) {
       return out.tried - own_tries + n <= max_tries && !(stop && stop->load());
@@ -670,24 +613,23 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     // (a lamp's quarter turn moves its front, where the wheelchair stops: the
     // nearest heading can cost several times the others); when that second
     // plan loses a tour, the next cheapest is tried.
-    std::vector<std::pair<double, std::pair<geometry::Pose2, PreferenceReport>>> found;
+    std::vector<std::pair<double, SquarePlace>> found;
     bool kept = false;
     for (std::size_t k = 0; k < squares.size() && budget_left(2); ++k) {
-      auto c = candidate(squares[k]);
-      if (!c) continue;
+      SquarePlace& c = squares[k];
       ++out.tried;
       std::vector<geometry::Pose2> q = poses;
-      q[i] = c->first;
-      hooks.place(object, c->first);
+      q[i] = c.pose;
+      hooks.place(object, c.pose);
       const CostTerms t = hooks.plan(q);
       if (t.tours_found >= terms.tours_found && t.total() <= terms.total()) {
-        keep_planned(std::move(q), t, c->second);
+        keep_planned(std::move(q), t, c.report);
         kept = true;
         ++out.squared;
         break;
       }
       hooks.place(object, poses[i]);
-      if (t.tours_found >= terms.tours_found) found.emplace_back(t.total(), std::move(*c));
+      if (t.tours_found >= terms.tours_found) found.emplace_back(t.total(), std::move(c));
     }
     if (kept) continue;
     // Cheapest first; equal costs keep the order planned.
@@ -696,7 +638,7 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     for (auto& [cost, c] : found) {
       if (!budget_left()) break;
       ++out.tried;
-      if (try_moves({{object, c.first}}, c.second)) {
+      if (try_moves({{object, c.pose}}, c.report)) {
         ++out.squared;
         break;
       }

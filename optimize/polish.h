@@ -40,14 +40,17 @@
 // wall places, moving the one or two movable objects that hold the place
 // to places of their own) look for a valid layout with fewer such misses
 // and a score no lower, near the kept one and clear of its tours'
-// corridor; each chain's best is planned (its own allowance, one planning
-// per chain, not counted against `max_tries`) and the first that keeps
-// every tour is kept at any cost. Then, when a preference is still unmet,
-// the same chains look for a layout with a higher score and no more gross
-// misses (RearrangeGoal::kHigherScore: a sofa whose place by the TV two
-// cabinets hold), planned on the same allowance and kept only at no
-// higher total cost. An eviction can also take the object's other
-// relation partners along, moved rigidly with it.
+// corridor; each chain's best is planned (an allowance of its own, one
+// planning per chain, not counted against `max_tries`) and the first that
+// keeps every tour is kept at any cost. Then, when a preference is still
+// unmet, chains with other seeds look for a layout with a higher score and
+// no more gross misses (RearrangeGoal::kHigherScore: a sofa whose place by
+// the TV two cabinets hold), the objects they move whose heading no
+// preference fixes turned square (optimize/squaring.h), planned on a
+// second allowance of the same size and kept only at no higher total cost,
+// unless it also has fewer gross misses. An eviction
+// can also take the object's other relation partners along, moved rigidly
+// with it.
 // Then each movable object whose heading no preference fixes is turned
 // square to its nearest wall, on the same conditions (score not lowered):
 // turned in place, or slid along the wall's normal to keep its gap to the
@@ -108,8 +111,10 @@ struct PolishResult {
 };
 
 //! Polishes `poses` (the best layout, whose terms are `terms`) in place;
-//! at most `max_tries` plannings and the rearrangement's own (one per
-//! chain, eight); `stop` (may be null) ends it early.
+//! at most `max_tries` plannings, plus the allowances of their own: each
+//! rearrangement goal's (one planning per chain, eight each) and a gross
+//! miss's second round of evictions (four); `stop` (may be null) ends it
+//! early.
 PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::vector<bool>& movable, std::vector<geometry::Pose2>& poses,
                     CostTerms& terms, const PolishHooks& hooks, int max_tries,

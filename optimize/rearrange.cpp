@@ -12,6 +12,7 @@
 
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
+#include "optimize/squaring.h"
 
 namespace hrs::optimize {
 
@@ -92,15 +93,44 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
     if (a == b) return 0.0;
     return kMetre * std::hypot(a.x - b.x, a.y - b.y) + (hooks.clear(k, a) ? 0.0 : kInCorridor);
   };
-  // Each object's wall places, computed once from the layout searched from
-  // (an object with a wall distance and no wall angle keeps its heading
-  // there).
+  // `at` with object k's heading turned square to its nearest wall there
+  // (the nearest multiple of 90° from the wall's normal) when no preference
+  // fixes it: the places drawn for such an object (its wall places, which
+  // keep its heading, its places round its partners, its aside draws) are
+  // square, as a designer would put an armchair; taken to another wall
+  // with the heading it had, it may stand 42° off square there.
+  // Only the higher score's chains square: a layout they find is kept only
+  // at no higher cost, and the squaring after the polish's other stages
+  // then finds the object where it was left. The fewer gross misses'
+  // chains keep every heading they do not mean to mend: a turned object's
+  // front, where the wheelchair stops, moves with it, and squared draws
+  // there left more layouts losing a tour (zoo seeds 1-3, gross misses in
+  // 6 designs against 2; docs/BENCHMARKS.md 2026-11-30).
+  std::vector<bool> free_heading(poses.size(), false);
+  for (std::size_t k = 0; k < poses.size() && !fewer_gross; ++k)
+    free_heading[k] = movable[k] && !heading_fixed(scene, static_cast<int>(k));
+  const auto squared = [&](int k, const std::vector<geometry::Pose2>& at) {
+    std::vector<geometry::Pose2> out = at;
+    geometry::Pose2& p = out[static_cast<std::size_t>(k)];
+    if (!free_heading[static_cast<std::size_t>(k)]) return out;
+    const double normal = model.wall_normal_angle(model.nearest_wall(k, p));
+    const double quarter = std::numbers::pi / 2;
+    p.theta = geometry::wrap_angle(
+        normal + std::round(geometry::wrap_angle(p.theta - normal) / quarter) * quarter);
+    return out;
+  };
+  // Each object's wall places, computed once from the layout searched from,
+  // its heading squared (an object with a wall distance and no wall angle
+  // keeps its heading there).
   std::vector<std::optional<std::vector<geometry::Pose2>>> slides(poses.size());
   const auto slides_of = [&](int k) -> const std::vector<geometry::Pose2>& {
     auto& w = slides[static_cast<std::size_t>(k)];
-    if (!w) w = wall_slides(scene, model, poses, k, kWallSlideStep);
-    // A free object's places round its relation partners instead.
-    if (w->empty()) w = relation_slides(scene, poses, k, kWallSlideStep);
+    if (!w) {
+      const std::vector<geometry::Pose2> from = squared(k, poses);
+      w = wall_slides(scene, model, from, k, kWallSlideStep);
+      // A free object's places round its relation partners instead.
+      if (w->empty()) w = relation_slides(scene, from, k, kWallSlideStep);
+    }
     return *w;
   };
   const geometry::Box box = geometry::bounding_box(scene.room.polygon);
@@ -129,9 +159,38 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
     const std::size_t i = uniform_index(rng, others);
     return i < walls.size() ? walls[i] : *extra;
   };
+  // Turns each object of `r` whose heading no preference fixes square to
+  // its nearest wall (squaring.h; the first square pose that is valid and
+  // keeps the goal), in move order: a chain takes an armchair to another
+  // wall with the heading it had, which may be askew there.
+  // The energy is the moved layout's again; an object squared back onto
+  // the pose it had leaves the move.
+  const auto square_moved = [&](Rearrangement& r) {
+    std::vector<geometry::Pose2> q = poses;
+    for (const auto& [k, pose] : r.move) q[static_cast<std::size_t>(k)] = pose;
+    bool changed = false;
+    for (auto& [k, pose] : r.move) {
+      if (heading_fixed(scene, k)) continue;
+      for (SquarePlace& sq : square_places(scene, model, q, k, r.report, hooks.valid)) {
+        if (!meets(sq.report)) continue;
+        pose = q[static_cast<std::size_t>(k)] = sq.pose;
+        r.report = std::move(sq.report);
+        changed = true;
+        break;
+      }
+    }
+    if (!changed) return;
+    std::erase_if(r.move, [&](const auto& m) { return m.second == poses[static_cast<std::size_t>(m.first)]; });
+    r.energy = -polish_score(r.report) + gross_misses(r.report);
+    for (const auto& [k, pose] : r.move) r.energy += moved_cost(k, pose);
+  };
   const int steps = std::min(kMaxSteps, kStepsPerObject * static_cast<int>(free_objects.size()));
   for (int chain = 0; chain < kChains; ++chain) {
-    std::mt19937_64 rng(splitmix64(hooks.seed ^ splitmix64(static_cast<std::uint64_t>(chain))));
+    // The higher score's chains draw other walks than the fewer gross
+    // misses' (the polish runs both from the same layout when the first
+    // keeps nothing).
+    const int stream = chain + (fewer_gross ? 0 : kChains);
+    std::mt19937_64 rng(splitmix64(hooks.seed ^ splitmix64(static_cast<std::uint64_t>(stream))));
     std::vector<geometry::Pose2> q = poses;
     PreferenceReport rq = report;
     std::vector<double> moved(poses.size(), 0.0);  // moved_cost per object in q
@@ -156,7 +215,11 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
       if (pool.empty()) pool = free_objects;
       const int o = pool[uniform_index(rng, pool.size())];
       const std::optional<geometry::Pose2> to =
-          draw(rng, preferred_poses(scene, model, q, o), o, q[static_cast<std::size_t>(o)], nullptr);
+          [&] {
+            const std::vector<geometry::Pose2> sq = squared(o, q);
+            return draw(rng, preferred_poses(scene, model, sq, o), o, sq[static_cast<std::size_t>(o)],
+                        nullptr);
+          }();
       if (!to) continue;
       std::vector<geometry::Pose2> next = q;
       next[static_cast<std::size_t>(o)] = *to;
@@ -170,11 +233,16 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
           continue;
         bool placed = true;
         for (const int j : held) {
-          const std::vector<geometry::Pose2> preferred = preferred_poses(scene, model, next, j);
+          const std::vector<geometry::Pose2> preferred =
+              preferred_poses(scene, model, squared(j, next), j);
           bool ok = false;
           for (int attempt = 0; attempt < kHolderDraws && !ok; ++attempt) {
+            // An aside draw is centred where the holder's last draw put it
+            // (where it stands, at the first): the draws walk away from a
+            // crowded spot.
+            const geometry::Pose2 now = squared(j, next)[static_cast<std::size_t>(j)];
             const std::optional<geometry::Pose2> theirs =
-                draw(rng, preferred, j, next[static_cast<std::size_t>(j)], &q[static_cast<std::size_t>(o)]);
+                draw(rng, preferred, j, now, &q[static_cast<std::size_t>(o)]);
             next[static_cast<std::size_t>(j)] = *theirs;  // `extra` makes one exist
             ok = hooks.fits(next, j);
           }
@@ -209,6 +277,7 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
         best = Rearrangement{eq, rq, std::move(move)};
       }
     }
+    if (best && !fewer_gross) square_moved(*best);
     if (best && std::none_of(found.begin(), found.end(),
                              [&](const Rearrangement& f) { return f.move == best->move; }))
       found.push_back(std::move(*best));

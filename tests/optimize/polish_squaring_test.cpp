@@ -5,7 +5,9 @@
 // first) whose tours cost no more is kept as planned, else the cheapest
 // (the next cheapest when the cheapest, planned again, loses a tour),
 // within the planning budget. Built rooms with the exact layout
-// checks and stand-in planners (part of optimize_polish_test).
+// checks and stand-in planners; square_places() (optimize/squaring.h)
+// alone on thousands of scrambled shipped layouts, checked independently
+// (part of optimize_polish_test).
 
 #include <gtest/gtest.h>
 
@@ -20,7 +22,9 @@
 #include "optimize/polish.h"
 #include "optimize/preferences.h"
 #include "optimize/sequences.h"
+#include "optimize/squaring.h"
 #include "polish_support.h"
+#include "scramble.h"
 
 namespace hrs::optimize {
 namespace {
@@ -370,6 +374,96 @@ TEST(Polish, SquaresALongObjectThatItsTurnPushesThroughTheWall) {
   EXPECT_NEAR(top_of(bench), 4.0 - 0.02, 1e-9);
   EXPECT_EQ(check_preferences(scene, model, poses).met, 1);
   EXPECT_EQ(violation_at(scratch, poses), "");
+}
+
+// square_places() on scrambled shipped layouts (axis-parallel rooms, so a
+// square heading is a multiple of 90°), for every movable object whose
+// heading no preference fixes: every place returned is valid under the
+// exact layout checks, square, scores no lower (a fresh report), stands
+// where the object stood or moved along one axis only (the slide along the
+// wall's normal), keeps the footprint's least distance to the walls when it
+// moved (the slide's purpose), and the headings come nearest first, each at
+// most once; an object already square gets none.
+TEST(Squaring, SquarePlacesAreValidSquareAndScoreNoLower) {
+  int objects = 0, places = 0, slid = 0, already = 0;
+  for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const CostModel model = testing::bounded_model(scene);
+    const std::vector<bool> movable = movable_of(scene);
+    // The least distance of a footprint's corners to the room's walls
+    // (each wall's segment, brute force).
+    const auto wall_gap = [&](const geometry::Object& o) {
+      double gap = std::numeric_limits<double>::infinity();
+      const geometry::Polygon& room = scene.room.polygon;
+      for (const Vec2& v : geometry::world_footprint(o))
+        for (std::size_t e = 0; e < room.size(); ++e) {
+          const Vec2 a = room[e], b = room[(e + 1) % room.size()];
+          const double ex = b.x - a.x, ey = b.y - a.y;
+          const double t = std::clamp(((v.x - a.x) * ex + (v.y - a.y) * ey) / (ex * ex + ey * ey), 0.0, 1.0);
+          gap = std::min(gap, std::hypot(v.x - a.x - t * ex, v.y - a.y - t * ey));
+        }
+      return gap;
+    };
+    for (std::uint64_t seed = 1; seed <= 250; ++seed) {
+      // Scrambled, then each free heading turned to a uniform angle (kept
+      // where valid): the scramble turns by quarters only.
+      const geometry::Scene work = testing::askew_free_headings(
+          scene, testing::scrambled(scene, movable, seed), movable, seed);
+      const std::vector<Pose2> poses = poses_of(work);
+      const PreferenceReport report = check_preferences(scene, model, poses);
+      geometry::Scene scratch = work;
+      const auto valid = exact_hooks(scratch).valid;
+      for (std::size_t i = 0; i < poses.size(); ++i) {
+        const int object = static_cast<int>(i);
+        if (!movable[i] || heading_fixed(scene, object)) continue;
+        const std::string at = std::string(file) + " seed " + std::to_string(seed) + " " +
+                               scene.objects[i].id;
+        ++objects;
+        const double quarters = poses[i].theta / (std::numbers::pi / 2);
+        const bool square = std::abs(quarters - std::round(quarters)) < 1e-4;
+        const std::vector<SquarePlace> found = square_places(scene, model, poses, object, report, valid);
+        if (square) {
+          ++already;
+          EXPECT_TRUE(found.empty()) << at;
+          continue;
+        }
+        double last_turn = -1.0;
+        std::vector<double> headings;
+        for (const SquarePlace& sq : found) {
+          ++places;
+          std::vector<Pose2> p = poses;
+          p[i] = sq.pose;
+          EXPECT_EQ(violation_at(work, p), "") << at;
+          const double q = sq.pose.theta / (std::numbers::pi / 2);
+          EXPECT_NEAR(q, std::round(q), 1e-9) << at;
+          const PreferenceReport r = check_preferences(scene, model, p);
+          EXPECT_EQ(r.met, sq.report.met) << at;
+          EXPECT_GE(testing::score_of(r), testing::score_of(report)) << at;
+          const bool moved = sq.pose.x != poses[i].x || sq.pose.y != poses[i].y;
+          EXPECT_TRUE(sq.pose.x == poses[i].x || sq.pose.y == poses[i].y) << at;
+          if (moved) {
+            ++slid;
+            geometry::Object before = scene.objects[i], after = scene.objects[i];
+            before.pose = poses[i];
+            after.pose = sq.pose;
+            EXPECT_NEAR(wall_gap(after), wall_gap(before), 1e-6) << at;
+          }
+          const double turn = std::abs(geometry::wrap_angle(sq.pose.theta - poses[i].theta));
+          EXPECT_GE(turn, last_turn - 1e-12) << at;
+          last_turn = turn;
+          for (const double h : headings)
+            EXPECT_GT(std::abs(geometry::wrap_angle(h - sq.pose.theta)), 1.0) << at;
+          headings.push_back(sq.pose.theta);
+        }
+      }
+    }
+  }
+  std::printf("%d objects with a free heading: %d already square, %d places (%d slid)\n", objects,
+              already, places, slid);
+  EXPECT_GT(objects, 1000);
+  EXPECT_GT(places, 1000);
+  EXPECT_GT(slid, 100);
 }
 
 }  // namespace

@@ -8,7 +8,8 @@
 // preference report) and has the energy the chains report
 // (recomputed here from the moves), moves movable objects only, and comes
 // out the same for the same seed; a built room where the chain must move an
-// object without preferences out of the way.
+// object without preferences out of the way; one where it must turn the
+// object it moves square.
 
 #include "optimize/rearrange.h"
 
@@ -44,6 +45,8 @@ TEST(Rearrange, ReturnsOnlyValidLayoutsThatMeetTheirGoal) {
   // moved in them.
   int cases = 0, reruns = 0;
   int with_miss[2] = {0, 0}, returned[2] = {0, 0}, moved_objects[2] = {0, 0};
+  // Moved objects whose heading no preference fixes, and of them square.
+  int free_moved[2] = {0, 0}, free_square[2] = {0, 0};
   for (const RearrangeGoal goal : {RearrangeGoal::kFewerGross, RearrangeGoal::kHigherScore})
   for (const char* file : {"bedroom.json", "office.json", "living_room.json", "l_studio.json"}) {
     const geometry::Scene scene =
@@ -65,7 +68,9 @@ TEST(Rearrange, ReturnsOnlyValidLayoutsThatMeetTheirGoal) {
           if (movable[i]) free.push_back(i);
         if (!free.empty()) movable[free[seed % free.size()]] = false;
       }
-      const geometry::Scene work = testing::scrambled(scene, movable, seed);
+      // Scrambled, with the free headings askew on even seeds.
+      geometry::Scene work = testing::scrambled(scene, movable, seed);
+      if (seed % 2 == 0) work = testing::askew_free_headings(scene, work, movable, seed);
       ASSERT_EQ(layout_violation(work), "") << what;
       std::vector<Pose2> poses;
       for (const auto& o : work.objects) poses.push_back(o.pose);
@@ -135,6 +140,50 @@ TEST(Rearrange, ReturnsOnlyValidLayoutsThatMeetTheirGoal) {
           EXPECT_GT(r.met - gross_here(r), input.met - gross_here(input)) << at;
         }
         EXPECT_NEAR(f.energy, -r.met + 2 * gross_here(r) + travel, 1e-9) << at;
+        // For the higher score, a moved object whose heading no preference
+        // fixes is square to the (axis-parallel) walls, unless no square
+        // heading turned in place is valid, meets the goal and scores no
+        // lower (the first the squaring tries). Checked on the last such
+        // object of the move: the squaring turns them in move order, so the
+        // layout it saw for the last one is the one returned. (The fewer
+        // gross misses' chains keep headings.)
+        const auto meets_goal = [&](const PreferenceReport& x) {
+          return g == 0 ? gross_here(x) < gross_here(input) &&
+                              x.met - gross_here(x) >= input.met - gross_here(input)
+                        : gross_here(x) <= gross_here(input) &&
+                              x.met - gross_here(x) > input.met - gross_here(input);
+        };
+        int last_free = -1;
+        for (std::size_t m = 0; m < f.move.size(); ++m) {
+          const auto& [object, pose] = f.move[m];
+          const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
+          bool fixed_heading = o.wall && o.wall->angle;
+          for (const geometry::Relation& rel : scene.relations)
+            fixed_heading = fixed_heading || (rel.angle && (rel.a == o.id || rel.b == o.id)) ||
+                            (rel.faces && rel.a == o.id);
+          if (fixed_heading) continue;
+          ++free_moved[g];
+          last_free = static_cast<int>(m);
+          const double quarters = pose.theta / (std::numbers::pi / 2);
+          free_square[g] += std::abs(quarters - std::round(quarters)) < 1e-6;
+        }
+        if (g == 1 && last_free >= 0) {
+          const auto& [object, pose] = f.move[static_cast<std::size_t>(last_free)];
+          const geometry::Object& o = scene.objects[static_cast<std::size_t>(object)];
+          const double quarters = pose.theta / (std::numbers::pi / 2);
+          for (int quarter = 0; quarter < 4 && std::abs(quarters - std::round(quarters)) >= 1e-6;
+               ++quarter) {
+            std::vector<Pose2> t = p;
+            t[static_cast<std::size_t>(object)].theta = quarter * std::numbers::pi / 2;
+            geometry::Scene turned = work;
+            for (std::size_t i = 0; i < t.size(); ++i) turned.objects[i].pose = t[i];
+            const PreferenceReport rt = check_preferences(scene, model, t);
+            if (layout_violation(turned).empty() && !refused(t) &&
+                rt.met - gross_here(rt) >= r.met - gross_here(r))
+              EXPECT_FALSE(meets_goal(rt))
+                  << at << ": " << o.id << " left askew where " << quarter * 90 << "° would do";
+          }
+        }
         if (k > 0) {
           EXPECT_LE(found[k - 1].energy, f.energy) << at;
         }
@@ -158,9 +207,14 @@ TEST(Rearrange, ReturnsOnlyValidLayoutsThatMeetTheirGoal) {
   }
   std::printf(
       "%d layouts; %d with an angle more than 20° off: %d rearrangements returned, "
-      "%d objects moved in them; %d with a preference unmet: %d returned, %d objects moved\n",
-      cases, with_miss[0], returned[0], moved_objects[0], with_miss[1], returned[1],
-      moved_objects[1]);
+      "%d objects moved in them (%d of %d with a free heading square); %d with a preference "
+      "unmet: %d returned, %d objects moved (%d of %d square)\n",
+      cases, with_miss[0], returned[0], moved_objects[0], free_square[0], free_moved[0],
+      with_miss[1], returned[1], moved_objects[1], free_square[1], free_moved[1]);
+  // The higher score's moved free headings are square, all but a few
+  // (those no square heading keeps; checked above).
+  EXPECT_GT(free_moved[1], 50);
+  EXPECT_GE(free_square[1] * 10, free_moved[1] * 9);
   // The situations the test is about occurred.
   EXPECT_GT(with_miss[0], 15);  // 25 when this test was written
   EXPECT_GT(returned[0], 100);  // 196
@@ -249,6 +303,75 @@ TEST(Rearrange, MovesAnObjectWithoutPreferencesOutOfTheWay) {
     ++mended;
   }
   EXPECT_GE(mended, 4);
+}
+
+// An armchair wanted against a wall and 2 m from a fixed TV stands askew
+// (40°) in the middle of the room. The chains take it to wall places with
+// the heading it has (a wall distance without an angle keeps it); each
+// layout they return has it turned square to its nearest wall, still at its
+// distance from that wall, and valid. The same seeds without the squaring
+// left it at 40°: no square heading planned afterwards has to keep the
+// tours (the shipped living room's armchair at 132°).
+TEST(Rearrange, SquaresTheObjectsItMovesWhoseHeadingIsFree) {
+  const geometry::Scene scene = geometry::parse_scene(R"({
+    "format": "hrspace-scene/1", "name": "armchair",
+    "room": {"size": [5, 4]},
+    "door": {"center": [1.0, 0.0], "width": 0.9, "clear_depth": 0.3},
+    "wheelchair": {"length": 1.1, "width": 0.65, "turning_radius": 0.7},
+    "objects": [
+      {"id": "tv", "size": [0.4, 1.2], "pose": [4.8, 2.0, 3.141592653589793], "fixed": true},
+      {"id": "armchair", "size": [0.85, 0.85], "pose": [1.6, 2.0, 0.6981317007977318],
+       "wall": {"distance": 0.1}}
+    ],
+    "relations": [{"a": "armchair", "b": "tv", "distance": 2.0}],
+    "activity": {"transitions": {"door": {"tv": 1.0}, "tv": {"armchair": 1.0}, "armchair": {"tv": 1.0}},
+                 "sequences": 2, "visits": 2}
+  })", "armchair");
+  ASSERT_EQ(layout_violation(scene), "");
+  const CostModel model = testing::bounded_model(scene);
+  const std::vector<Pose2> poses = testing::poses_of(scene);
+  const PreferenceReport input = check_preferences(scene, model, poses);
+  ASSERT_EQ(input.met, 0);
+  ASSERT_EQ(input.total, 2);
+  const std::vector<bool> movable = testing::movable_of(scene);
+  geometry::Scene scratch = scene;
+  RearrangeHooks hooks;
+  hooks.fits = hooks.valid = testing::exact_hooks(scratch).valid;
+  hooks.clear = [](int, const Pose2&) { return true; };
+  int layouts = 0, wall_met = 0;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    hooks.seed = seed;
+    for (const Rearrangement& f : rearrangements(scene, model, movable, poses, input, hooks, nullptr,
+                                                 RearrangeGoal::kHigherScore)) {
+      const std::string at = "seed " + std::to_string(seed) + " layout " + std::to_string(layouts);
+      ASSERT_EQ(f.move.size(), 1u) << at;
+      ASSERT_EQ(f.move[0].first, 1) << at;
+      const Pose2 chair = f.move[0].second;
+      // Square to the room's axis-parallel walls: a multiple of 90°.
+      const double quarters = chair.theta / (std::numbers::pi / 2);
+      EXPECT_NEAR(quarters, std::round(quarters), 1e-9) << at << ": heading " << chair.theta;
+      std::vector<Pose2> p = poses;
+      p[1] = chair;
+      scratch.objects[1].pose = chair;
+      EXPECT_EQ(layout_violation(scratch), "") << at;
+      const PreferenceReport r = check_preferences(scene, model, p);
+      EXPECT_GT(r.met, input.met) << at;
+      EXPECT_EQ(r.met, f.report.met) << at;
+      for (const PreferenceCheck& c : r.checks)
+        if (c.kind == "wall_distance" && c.met) {
+          ++wall_met;
+          // Independently: the footprint's least distance to the four walls.
+          double gap = 1e9;
+          for (const geometry::Vec2& v : geometry::world_footprint(scratch.objects[1]))
+            gap = std::min({gap, v.x, v.y, 5.0 - v.x, 4.0 - v.y});
+          EXPECT_NEAR(gap, 0.1, 0.05) << at;
+        }
+      ++layouts;
+    }
+  }
+  std::printf("%d layouts returned, %d with the wall distance met\n", layouts, wall_met);
+  EXPECT_GT(layouts, 20);
+  EXPECT_GT(wall_met, 10);
 }
 
 // A layout with no gross miss has nothing to rearrange; neither has one
