@@ -599,13 +599,14 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     if (!movable[i] || heading_fixed(scene, object) || out.tried - own_tries >= max_tries ||
         (stop && stop->load()))
       continue;
-    // The square headings, each turned in place or slid to keep its gap to
-    // the wall, valid and losing no preference (optimize/squaring.h).
-    std::vector<SquarePlace> squares = square_places(scene, model, poses, object, report, hooks.valid);
     // Whether `n` more plannings fit in the budget.
     const auto budget_left = [&](int n = 1) {
       return out.tried - own_tries + n <= max_tries && !(stop && stop->load());
     };
+    if (!budget_left(2)) continue;
+    // The square headings, each turned in place or slid to keep its gap to
+    // the wall, valid and losing no preference (optimize/squaring.h).
+    std::vector<SquarePlace> squares = square_places(scene, model, poses, object, report, hooks.valid);
     // The square headings, nearest first, each planned while two plannings
     // are left (one to evaluate, one to keep): the first whose tours are all
     // found at no higher total cost is kept as planned. When every one costs

@@ -93,19 +93,24 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
     if (a == b) return 0.0;
     return kMetre * std::hypot(a.x - b.x, a.y - b.y) + (hooks.clear(k, a) ? 0.0 : kInCorridor);
   };
-  // `at` with object k's heading turned square to its nearest wall there
-  // (the nearest multiple of 90° from the wall's normal) when no preference
-  // fixes it: the places drawn for such an object (its wall places, which
-  // keep its heading, its places round its partners, its aside draws) are
-  // square, as a designer would put an armchair; taken to another wall
-  // with the heading it had, it may stand 42° off square there.
+  // `at` with object k's heading turned square to the wall nearest it in
+  // `at` (the nearest multiple of 90° from that wall's normal) when no
+  // preference fixes it. Its wall places (computed once, from where it
+  // stands, and keeping that heading on every wall), its places round its
+  // partners and its aside draws take that heading: square on every wall
+  // of an axis-parallel room, as a designer would put an armchair (taken to
+  // another wall with the heading it had, it stood 42° off square there).
+  // A wall at another angle, or the place a moved object leaves (a
+  // holder's fallback, with that object's heading), can still leave it
+  // askew; square_moved() turns such objects of a chain's best layout.
   // Only the higher score's chains square: a layout they find is kept only
   // at no higher cost, and the squaring after the polish's other stages
   // then finds the object where it was left. The fewer gross misses'
   // chains keep every heading they do not mean to mend: a turned object's
   // front, where the wheelchair stops, moves with it, and squared draws
   // there left more layouts losing a tour (zoo seeds 1-3, gross misses in
-  // 6 designs against 2; docs/BENCHMARKS.md 2026-11-30).
+  // 6 designs against 2; docs/BENCHMARKS.md 2026-11-30, "square headings
+  // in the higher-score rearrangement").
   std::vector<bool> free_heading(poses.size(), false);
   for (std::size_t k = 0; k < poses.size() && !fewer_gross; ++k)
     free_heading[k] = movable[k] && !heading_fixed(scene, static_cast<int>(k));
