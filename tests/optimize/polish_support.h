@@ -16,6 +16,7 @@
 #include "optimize/design.h"
 #include "optimize/polish.h"
 #include "optimize/preferences.h"
+#include "optimize/rearrange.h"
 #include "optimize/sequences.h"
 
 namespace hrs::optimize::testing {
@@ -86,6 +87,15 @@ inline PolishHooks exact_hooks(geometry::Scene& scratch) {
   };
   hooks.place = [](int, const geometry::Pose2&) {};
   hooks.kept = [] {};
+  return hooks;
+}
+
+//! Rearrangement hooks whose `fits` and `valid` are both the exact layout
+//! checks on `scratch`, with every place clear of the tours' corridor.
+inline RearrangeHooks exact_rearrange_hooks(geometry::Scene& scratch) {
+  RearrangeHooks hooks;
+  hooks.fits = hooks.valid = exact_hooks(scratch).valid;
+  hooks.clear = [](int, const geometry::Pose2&) { return true; };
   return hooks;
 }
 

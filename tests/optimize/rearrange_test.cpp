@@ -335,9 +335,7 @@ TEST(Rearrange, SquaresTheObjectsItMovesWhoseHeadingIsFree) {
   ASSERT_EQ(input.total, 2);
   const std::vector<bool> movable = testing::movable_of(scene);
   geometry::Scene scratch = scene;
-  RearrangeHooks hooks;
-  hooks.fits = hooks.valid = testing::exact_hooks(scratch).valid;
-  hooks.clear = [](int, const Pose2&) { return true; };
+  RearrangeHooks hooks = testing::exact_rearrange_hooks(scratch);
   int layouts = 0, wall_met = 0;
   for (std::uint64_t seed = 1; seed <= 20; ++seed) {
     hooks.seed = seed;
@@ -407,9 +405,7 @@ TEST(Rearrange, SquaresAMovedObjectToAWallAtAnotherAngle) {
   ASSERT_EQ(input.total, 1);
   const std::vector<bool> movable = testing::movable_of(scene);
   geometry::Scene scratch = scene;
-  RearrangeHooks hooks;
-  hooks.fits = hooks.valid = testing::exact_hooks(scratch).valid;
-  hooks.clear = [](int, const Pose2&) { return true; };
+  RearrangeHooks hooks = testing::exact_rearrange_hooks(scratch);
   int layouts = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
     hooks.seed = seed;
