@@ -12,6 +12,7 @@
 #include "geometry/polygon_ops.h"
 #include "geometry/random.h"
 #include "optimize/escape.h"
+#include "optimize/tour_proxy.h"
 #include "optimize/tour_round.h"
 
 namespace hrs::optimize {
@@ -408,6 +409,11 @@ class DesignRun {
     hooks.kept = [this] { result_.tours = round_.tours(); };
     hooks.tours = [this]() -> const std::vector<planning::Tour>& { return result_.tours; };
     hooks.seed = splitmix64(options_.seed ^ 0x706f6c697368ULL);
+    std::optional<TourProxy> proxy;
+    if (options_.planner.shorten) {
+      proxy.emplace(scene_, model_, round_.local_goals());
+      hooks.tour_proxy = [&proxy](const std::vector<Pose2>& p) { return proxy->value(p); };
+    }
     const int max_tries = std::max(20, 4 * static_cast<int>(poses.size()));
     const PolishResult pr = polish(scene_, model_, movable_, poses, terms, hooks, max_tries, stop_);
     static_cast<PolishResult&>(result_.polish) = pr;

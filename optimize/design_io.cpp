@@ -171,6 +171,7 @@ json run_report_json(const DesignResult& result, const RunInfo& info) {
             {"rearranged", result.polish.rearranged},
             {"turned", result.polish.turned},
             {"squared", result.polish.squared},
+            {"shortened", result.polish.shortened},
             {"tours_found_before", result.polish.tours_found_before},
             {"preferences_met_before", result.polish.met_before}}},
           {"refused_legs",

@@ -17,7 +17,7 @@ PlannerConfig literal_config() {
   c.preset = "literal";
   c.proposed = false;
   c.reuse = ReuseOptions::none();
-  c.goalskip = c.refuse = c.escape = c.early = c.prefer = c.rescue = false;
+  c.goalskip = c.refuse = c.escape = c.early = c.prefer = c.shorten = c.rescue = false;
   return c;
 }
 
@@ -59,7 +59,7 @@ const std::array<PlannerConfig::Preset, 4>& PlannerConfig::presets() {
   static const std::array<Preset, 4> list{{
       {"default",
        "the proposed planner with every technique that pays, and the design loop's "
-       "additions (goalskip, refuse, escape, early, prefer, rescue)"},
+       "additions (goalskip, refuse, escape, early, prefer, shorten, rescue)"},
       {"baseline", "RRT per leg (§III-B) with the design loop's additions"},
       {"paper",
        "the paper's proposed planner (§V): samples, steering, paths, trees; none of our "
@@ -82,8 +82,8 @@ PlannerConfig PlannerConfig::from_preset(std::string_view name, std::string_view
                    known + ")");
 }
 
-const std::array<PlannerConfig::Switch, 6>& PlannerConfig::switches() {
-  static const std::array<Switch, 6> list{{
+const std::array<PlannerConfig::Switch, 7>& PlannerConfig::switches() {
+  static const std::array<Switch, 7> list{{
       {"goalskip", &PlannerConfig::goalskip,
        "an RRT does not steer to the goal again from a node it already tried"},
       {"refuse", &PlannerConfig::refuse,
@@ -98,6 +98,9 @@ const std::array<PlannerConfig::Switch, 6>& PlannerConfig::switches() {
        "preference terms bounded and scaled to their tolerances, preference moves, an "
        "opening arrangement of the input, an arrangement clear of the found tours, and a "
        "final polish that keeps every found tour"},
+      {"shorten", &PlannerConfig::shorten,
+       "with prefer, last in the polish: layouts that meet the same preferences along "
+       "shorter tours (a tour proxy), kept at a lower total cost"},
       {"rescue", &PlannerConfig::rescue,
        "after the design, unfound tours are planned again with the lattice planner "
        "answering every leg the RRT misses"},

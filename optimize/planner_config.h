@@ -60,6 +60,10 @@ struct PlannerConfig {
   //! that meets its preferences wherever every found tour stays found.
   //! Off: the paper's squared interior terms and moves.
   bool prefer = true;
+  //! Ours, with `prefer`: last in the polish, layouts that meet the same
+  //! preferences with their stops closer along the likely tours (a tour
+  //! proxy, optimize/tour_proxy.h), kept only at a lower total cost.
+  bool shorten = true;
   //! Ours: after the design, each tour still unfound is planned once more,
   //! every leg the RRT misses (and the gate does not refuse) answered by the
   //! lattice planner (planning/lattice.h): a leg that exists at the
@@ -82,7 +86,7 @@ struct PlannerConfig {
     bool PlannerConfig::*on;
     const char* what;
   };
-  static const std::array<Switch, 6>& switches();
+  static const std::array<Switch, 7>& switches();
 
   //! The shortest text that parses back to this configuration: the preset,
   //! then every switch and technique that differs from it.

@@ -65,6 +65,10 @@ constexpr std::size_t kEvictTries = 4;
 constexpr int kPlaces = 6;
 constexpr std::size_t kTurnTries = 2;
 
+//! Rounds of the shorter-tour rearrangement: each kept layout starts one
+//! more (each with its own allowance).
+constexpr int kShorterRounds = 2;
+
 //! A group member that no longer fits once turned is shifted by up to this
 //! much (metres), in rings this far apart.
 constexpr double kNudge = 0.3;
@@ -101,18 +105,19 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     if (corridor) corridor.emplace(scene.wheelchair, hooks.tours());
   };
   // Places `moves`, plans, and keeps them when every tour found before is
-  // still found, and with `no_costlier` the total cost is not higher (`met`
-  // is the preference report of the moved layout); else puts the objects
-  // back.
+  // still found, and with `no_costlier` the total cost is not higher (with
+  // `lower` too: lower) (`met` is the preference report of the moved
+  // layout); else puts the objects back.
   auto try_moves = [&](const std::vector<std::pair<int, geometry::Pose2>>& moves,
-                       PreferenceReport& met, bool no_costlier = false) {
+                       PreferenceReport& met, bool no_costlier = false, bool lower = false) {
     std::vector<geometry::Pose2> q = poses;
     for (const auto& [k, pose] : moves) {
       q[static_cast<std::size_t>(k)] = pose;
       hooks.place(k, pose);
     }
     const CostTerms t = hooks.plan(q);
-    if (t.tours_found >= terms.tours_found && (!no_costlier || t.total() <= terms.total())) {
+    if (t.tours_found >= terms.tours_found &&
+        (!no_costlier || (lower ? t.total() < terms.total() : t.total() <= terms.total()))) {
       keep_planned(std::move(q), t, met);
       return true;
     }
@@ -553,18 +558,23 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   rh.valid = hooks.valid;
   rh.clear = clear;
   rh.seed = hooks.seed;
+  rh.tour_proxy = hooks.tour_proxy;
   // The chains' layouts for `goal`, planned best first with an allowance of
   // their own (one per chain), beyond `max_tries`: the moves before them
   // may have spent theirs. The first kept (at no higher total cost with
   // `no_costlier`, unless it has fewer gross misses) ends it.
   const auto rearrange = [&](RearrangeGoal goal, bool no_costlier) {
+    const bool shorter = goal == RearrangeGoal::kShorterTours;
     for (Rearrangement& f : rearrangements(scene, model, movable, poses, report, rh, stop, goal)) {
       if (stop && stop->load()) break;
       ++out.tried, ++own_tries;
       // One that also mends a gross miss is kept at any cost, as the
-      // fewer gross misses' are.
-      if (try_moves(f.move, f.report, no_costlier && gross_misses(f.report) >= gross_misses(report))) {
-        ++out.kept, ++out.rearranged;
+      // fewer gross misses' are; a shorter-tour layout only at a lower cost.
+      if (try_moves(f.move, f.report,
+                    shorter || (no_costlier && gross_misses(f.report) >= gross_misses(report)),
+                    shorter)) {
+        ++out.kept;
+        ++(shorter ? out.shortened : out.rearranged);
         break;
       }
     }
@@ -659,6 +669,17 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
       return !c.met && (c.object == id || c.other == id);
     });
     if (unmet && !grossly_off(report, id)) evict(i);
+  }
+  // Last of all, the same preferences met along shorter tours: chains that
+  // keep the score and lower the tour proxy (optimize/tour_proxy.h), each
+  // best layout planned (an allowance of its own, one per chain), the first
+  // at a lower total cost kept. Run last, it leaves every stage before it
+  // as it was.
+  // A kept layout starts another round, up to kShorterRounds.
+  for (int round = 0; round < kShorterRounds && rh.tour_proxy && !(stop && stop->load()); ++round) {
+    const int before = out.shortened;
+    rearrange(RearrangeGoal::kShorterTours, true);
+    if (out.shortened == before) break;
   }
   return out;
 }

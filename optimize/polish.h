@@ -60,6 +60,11 @@
 // and no angle grossly off has the places that would meet more freed, as
 // in an eviction (the score must rise, with no new gross miss), kept only
 // at no higher total cost.
+// Last of all, with a tour proxy (PolishHooks::tour_proxy), chains look for
+// a layout with the same score and a lower proxy
+// (RearrangeGoal::kShorterTours); each chain's best is planned and the
+// first whose tours are all found at a lower total cost is kept, which
+// starts one more round (two at most, each with its own allowance).
 // The order is fixed (objects ascending, candidates in preferred_poses
 // order) and the chains are seeded (PolishHooks::seed), so the result is a
 // function of the layout and the seeds, whatever the thread count.
@@ -95,6 +100,9 @@ struct PolishHooks {
   //! The tours of the layout kept last (may be unset): the places along the
   //! walls that stay clear of their corridor are tried first.
   std::function<const std::vector<planning::Tour>&()> tours;
+  //! The tour proxy of a layout (optimize/tour_proxy.h); unset, the
+  //! shorter-tour rearrangement does not run.
+  std::function<double(const std::vector<geometry::Pose2>& poses)> tour_proxy;
   //! Seeds the rearrangement's chains (one output for a seed).
   std::uint64_t seed = 0;
 };
@@ -108,13 +116,14 @@ struct PolishResult {
   int turned = 0;   //!< heading groups turned as one body (group_turns)
   int rearranged = 0;  //!< of `kept`, rearrangements found over the preferences alone
   int squared = 0;  //!< objects turned square to their wall (no heading preference)
+  int shortened = 0;  //!< of `kept`, a shorter-tour rearrangement (RearrangeGoal::kShorterTours)
 };
 
 //! Polishes `poses` (the best layout, whose terms are `terms`) in place;
 //! at most `max_tries` plannings, plus the allowances of their own: each
-//! rearrangement goal's (one planning per chain, eight each) and a gross
-//! miss's second round of evictions (four); `stop` (may be null) ends it
-//! early.
+//! rearrangement goal's (one planning per chain, eight each; the shorter
+//! tours' eight per round) and a gross miss's second round of evictions
+//! (four); `stop` (may be null) ends it early.
 PolishResult polish(const geometry::Scene& scene, const CostModel& model,
                     const std::vector<bool>& movable, std::vector<geometry::Pose2>& poses,
                     CostTerms& terms, const PolishHooks& hooks, int max_tries,

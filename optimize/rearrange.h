@@ -19,8 +19,9 @@
 // one or two movable objects that hold the place to places of their own. Its energy is
 //   E = -score + gross + 0.05 * (metres moved) + 0.5 * (moved objects in the
 //       kept tours' corridor),
-// score and gross as below. Nothing is planned: the chains return their best
-// layouts, and the polish plans them.
+// score and gross as below (kShorterTours adds the tour proxy over
+// kPreferencePenalty, and draws any movable object). Nothing is planned:
+// the chains return their best layouts, and the polish plans them.
 
 #include <atomic>
 #include <cstdint>
@@ -65,6 +66,9 @@ struct RearrangeHooks {
   std::function<bool(const std::vector<geometry::Pose2>& poses, int moved)> valid;
   //! Whether object `object` at `to` stays clear of the kept tours' corridor.
   std::function<bool(int object, const geometry::Pose2& to)> clear;
+  //! The tour proxy of a layout (optimize/tour_proxy.h); kShorterTours
+  //! runs only when it is set.
+  std::function<double(const std::vector<geometry::Pose2>& poses)> tour_proxy;
   //! Seeds the chains (one output for a seed).
   std::uint64_t seed = 0;
 };
@@ -77,12 +81,25 @@ enum class RearrangeGoal {
   //! higher total cost): the misses no one- to three-object move of the
   //! polish mends, a distance among them.
   kHigherScore,
+  //! A lower tour proxy (RearrangeHooks::tour_proxy) by more than
+  //! kProxyMargin of it, at a score no lower and no more angles grossly
+  //! off (kept only at a lower total cost): the same preferences met by a
+  //! layout whose stops lie closer along the likely tours.
+  kShorterTours,
 };
+
+//! kShorterTours' energy weighs the tour proxy (in units of the total
+//! cost) by this: a preference term costs at most kPreferencePenalty in
+//! the total cost, and one preference in the chains' energy.
+inline constexpr double kProxyWeight = 1.0 / kPreferencePenalty;
+//! kShorterTours' layouts lower the proxy by more than this share of it.
+inline constexpr double kProxyMargin = 0.01;
 
 //! One chain's best layout: the moves from the layout searched from, its
 //! preference report and its energy.
 struct Rearrangement {
   double energy = 0.0;
+  double proxy = 0.0;  //!< the tour proxy (kShorterTours only; else 0)
   PreferenceReport report;
   GroupMove move;
 };

@@ -77,6 +77,9 @@ class TourRound {
   std::uint64_t version() const { return version_; }
   int threads() const { return pool_.size(); }
   //! The last round's tours (rescue(): the rescued layout's).
+  //! Each object's goal poses in its own frame (planning::local_goal_poses
+  //! with the tours' options), scene order.
+  const std::vector<std::vector<planning::GoalPose>>& local_goals() const { return *local_goals_; }
   const std::vector<planning::Tour>& tours() const { return tours_; }
   //! Each tour's leg grades (optimize/costs.h; empty for found tours).
   const std::vector<std::vector<double>>& blockage() const { return blockage_; }

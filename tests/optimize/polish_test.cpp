@@ -24,6 +24,8 @@
 #include "optimize/design.h"
 #include "optimize/preferences.h"
 #include "optimize/sequences.h"
+#include "optimize/tour_proxy.h"
+#include "planning/goals.h"
 #include "polish_support.h"
 #include "scramble.h"
 
@@ -495,6 +497,67 @@ TEST(Polish, KeepsNoRearrangementThatLosesATour) {
   EXPECT_EQ(r.kept + r.rearranged, 0);
   EXPECT_EQ(poses, input);
   EXPECT_EQ(terms.tours_found, 2);
+}
+
+// The shorter-tour rearrangement on the shipped rooms, with a stand-in
+// planner whose path cost is the tour proxy itself: a layout with the same
+// score and shorter tours is kept, at a lower total cost, and only then;
+// with a planner whose cost never falls, nothing is kept by it, and it
+// plans at most one layout per chain and round.
+TEST(Polish, KeepsAShorterTourLayoutOnlyAtALowerCost) {
+  int shortened = 0;
+  for (const char* file : {"bedroom.json", "office.json", "living_room.json"}) {
+    const geometry::Scene scene =
+        geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/" + file);
+    const CostModel model = bounded_model(scene);
+    std::vector<std::vector<planning::GoalPose>> local;
+    for (const auto& o : scene.objects) local.push_back(planning::local_goal_poses(scene, o));
+    const TourProxy proxy(scene, model, local);
+    const std::vector<bool> movable = movable_of(scene);
+    for (const bool falls : {true, false}) {
+      const std::string what = std::string(file) + (falls ? " (proxy cost)" : " (constant cost)");
+      std::vector<Pose2> poses = poses_of(scene);
+      const std::vector<Pose2> input = poses;
+      const PreferenceReport before = check_preferences(scene, model, poses);
+      geometry::Scene scratch = scene;
+      PolishHooks hooks = exact_hooks(scratch);
+      hooks.seed = 1;
+      hooks.tour_proxy = [&](const std::vector<Pose2>& p) { return proxy.value(p); };
+      const auto cost_of = [&](const std::vector<Pose2>& p) {
+        CostTerms t = two_tours_found();
+        t.path_length = falls ? proxy.value(p) : 10.0;
+        return t;
+      };
+      int planned = 0;
+      hooks.plan = [&](const std::vector<Pose2>& p) {
+        ++planned;
+        return cost_of(p);
+      };
+      CostTerms terms = cost_of(poses);
+      const double cost0 = terms.total();
+      // No planning budget for the other stages: only the rearrangements'
+      // allowances plan.
+      const PolishResult r = polish(scene, model, movable, poses, terms, hooks, 0);
+      const PreferenceReport after = check_preferences(scene, model, poses);
+      EXPECT_GE(after.met - testing::gross_count(after), before.met - testing::gross_count(before))
+          << what;
+      EXPECT_EQ(violation_at(scene, poses), "") << what;
+      if (!falls) {
+        EXPECT_EQ(r.shortened, 0) << what;
+        EXPECT_EQ(terms.total(), cost0) << what;
+        EXPECT_LE(planned, 8 + 8 + 8) << what;  // three goals' chains, one round each
+        continue;
+      }
+      if (r.shortened > 0) {
+        ++shortened;
+        EXPECT_NE(poses, input) << what;
+        EXPECT_LT(terms.total(), cost0) << what;
+        EXPECT_DOUBLE_EQ(terms.total(), proxy.value(poses)) << what;
+      }
+      EXPECT_LE(r.shortened, 2) << what;  // kShorterRounds
+    }
+  }
+  EXPECT_GE(shortened, 2);
 }
 
 }  // namespace
