@@ -675,8 +675,12 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
   // best layout planned (an allowance of its own, one per chain), the first
   // at a lower total cost kept. Run last, it leaves every stage before it
   // as it was.
+  // Only when every tour is found: an unfound tour's penalty outweighs
+  // what shorter tours save, and its stops are not where the proxy drives.
   // A kept layout starts another round, up to kShorterRounds.
-  for (int round = 0; round < kShorterRounds && rh.tour_proxy && !(stop && stop->load()); ++round) {
+  for (int round = 0; round < kShorterRounds && rh.tour_proxy &&
+                      terms.tours_found == terms.tours_total && !(stop && stop->load());
+       ++round) {
     const int before = out.shortened;
     rearrange(RearrangeGoal::kShorterTours, true);
     if (out.shortened == before) break;

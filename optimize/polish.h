@@ -60,7 +60,8 @@
 // and no angle grossly off has the places that would meet more freed, as
 // in an eviction (the score must rise, with no new gross miss), kept only
 // at no higher total cost.
-// Last of all, with a tour proxy (PolishHooks::tour_proxy), chains look for
+// Last of all, with a tour proxy (PolishHooks::tour_proxy) and every tour
+// found, chains look for
 // a layout with the same score and a lower proxy
 // (RearrangeGoal::kShorterTours); each chain's best is planned and the
 // first whose tours are all found at a lower total cost is kept, which

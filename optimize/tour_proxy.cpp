@@ -63,51 +63,80 @@ TourProxy::TourProxy(const geometry::Scene& scene, const CostModel& model,
 
 double TourProxy::value(const std::vector<geometry::Pose2>& poses) const {
   const std::size_t n = scene_.objects.size();
-  // The footprints of the objects that moved; every object's free stops
-  // again when any footprint changed (a moved object can block or free
-  // another's stop).
-  bool moved = !cached_;
+  const auto overlap = [](const geometry::Box& a, const geometry::Box& b) {
+    return a.xmin <= b.xmax && b.xmin <= a.xmax && a.ymin <= b.ymax && b.ymin <= a.ymax;
+  };
+  // The objects that moved since the last call (all, the first time): their
+  // footprints, and the boxes round where their stops' chairs can stand.
+  std::vector<geometry::Box> was;  // the moved objects' old and new boxes
+  std::vector<char> recheck(n, cached_ ? 0 : 1);
   if (!cached_) {
     at_ = poses;
     fp_.assign(n, {});
     box_.assign(n, {});
+    reach_.assign(n, {});
     free_.assign(n, {});
+    seq_.assign(nodes_.size(), 0.0);
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (cached_ && poses[i] == at_[i]) continue;
-    moved = true;
+    if (cached_) was.push_back(box_[i]);
+    recheck[i] = 1;
     at_[i] = poses[i];
     geometry::Object o = scene_.objects[i];
     o.pose = poses[i];
     fp_[i] = geometry::world_footprint(o);
     box_[i] = geometry::bounding_box(fp_[i]);
-  }
-  cached_ = true;
-  if (moved) {
-    const auto blocked = [&](geometry::Vec2 p, std::size_t own) {
-      if (!geometry::point_in_polygon(p, scene_.room.polygon)) return true;
-      for (std::size_t j = 0; j < n; ++j) {
-        if (j == own) continue;
-        const geometry::Box& b = box_[j];
-        if (p.x < b.xmin || p.x > b.xmax || p.y < b.ymin || p.y > b.ymax) continue;
-        if (geometry::point_in_polygon(p, fp_[j])) return true;
+    std::vector<geometry::Vec2> reach;
+    for (const auto& side : stops_[i])
+      for (const geometry::Pose2& l : side) {
+        const geometry::Vec2 c = geometry::to_world(poses[i], l.position());
+        const geometry::Pose2 st{c.x, c.y, geometry::wrap_angle(poses[i].theta + l.theta)};
+        for (const geometry::Vec2 v : geometry::chair_footprint(scene_.wheelchair, st)) reach.push_back(v);
+        reach.push_back(c);
       }
-      return false;
-    };
-    for (std::size_t u = 0; u < n; ++u) {
-      free_[u].clear();
-      for (const std::vector<geometry::Pose2>& side : stops_[u])
-        for (const geometry::Pose2& l : side) {
-          const geometry::Vec2 c = geometry::to_world(poses[u], l.position());
-          const geometry::Pose2 s{c.x, c.y, geometry::wrap_angle(poses[u].theta + l.theta)};
-          bool free = !blocked(c, u);
-          for (const geometry::Vec2 v : geometry::chair_footprint(scene_.wheelchair, s))
-            free = free && !blocked(v, u);
-          if (free) {
-            free_[u].push_back(s);
-            break;
-          }
+    reach_[i] = geometry::bounding_box(reach);
+    if (cached_) was.push_back(box_[i]);
+  }
+  const bool first = !cached_;
+  cached_ = true;
+  // A stop's free test looks at points inside its object's reach box, and
+  // a footprint only answers for points in its own box: an object that did
+  // not move keeps its free stops unless a moved footprint's old or new
+  // box meets its reach.
+  for (std::size_t u = 0; u < n && !first; ++u)
+    for (std::size_t b = 0; b < was.size() && !recheck[u]; ++b)
+      recheck[u] = overlap(reach_[u], was[b]);
+  const auto blocked = [&](geometry::Vec2 p, std::size_t own) {
+    if (!geometry::point_in_polygon(p, scene_.room.polygon)) return true;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (j == own) continue;
+      const geometry::Box& b = box_[j];
+      if (p.x < b.xmin || p.x > b.xmax || p.y < b.ymin || p.y > b.ymax) continue;
+      if (geometry::point_in_polygon(p, fp_[j])) return true;
+    }
+    return false;
+  };
+  std::vector<char> changed(n, first ? 1 : 0);  // free stops differ from the last call's
+  std::vector<geometry::Pose2> now;
+  for (std::size_t u = 0; u < n; ++u) {
+    if (!recheck[u]) continue;
+    now.clear();
+    for (const std::vector<geometry::Pose2>& side : stops_[u])
+      for (const geometry::Pose2& l : side) {
+        const geometry::Vec2 c = geometry::to_world(poses[u], l.position());
+        const geometry::Pose2 st{c.x, c.y, geometry::wrap_angle(poses[u].theta + l.theta)};
+        bool free = !blocked(c, u);
+        for (const geometry::Vec2 v : geometry::chair_footprint(scene_.wheelchair, st))
+          free = free && !blocked(v, u);
+        if (free) {
+          now.push_back(st);
+          break;
         }
+      }
+    if (now != free_[u]) {
+      free_[u] = now;
+      changed[u] = 1;
     }
   }
   const std::vector<geometry::Pose2> door{door_};
@@ -135,6 +164,13 @@ double TourProxy::value(const std::vector<geometry::Pose2>& poses) const {
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     const std::vector<int>& nodes = nodes_[k];
     const std::size_t m = nodes.size();
+    // A sequence none of whose objects' free stops changed keeps its value.
+    if (std::none_of(nodes.begin(), nodes.end(),
+                     [&](int o) { return o >= 0 && changed[static_cast<std::size_t>(o)]; }) &&
+        !first) {
+      total += seq_[k];
+      continue;
+    }
     const double legs_in = static_cast<double>(std::max<std::size_t>(1, m - 1));
     std::size_t last = 0;  // the node the chair stands at
     cost.assign(1, 0.0);
@@ -155,8 +191,9 @@ double TourProxy::value(const std::vector<geometry::Pose2>& poses) const {
       cost.swap(next);
       last = i;
     }
-    total += model_.sequence_weight(static_cast<int>(k)) *
-             (*std::min_element(cost.begin(), cost.end()) + missed);
+    seq_[k] = model_.sequence_weight(static_cast<int>(k)) *
+              (*std::min_element(cost.begin(), cost.end()) + missed);
+    total += seq_[k];
   }
   return total;
 }

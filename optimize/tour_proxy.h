@@ -36,10 +36,12 @@ class TourProxy {
   TourProxy(const geometry::Scene& scene, const CostModel& model,
             const std::vector<std::vector<planning::GoalPose>>& local);
 
-  //! The proxy of the layout `poses` (scene order). Footprints, free stops
-  //! and each leg's cost matrix are cached from the previous call and
-  //! recomputed only for what moved, so a chain that moves one or two
-  //! objects a step pays for those; one TourProxy serves one thread.
+  //! The proxy of the layout `poses` (scene order). Footprints, free stops,
+  //! each leg's cost matrix and each sequence's term are cached from the
+  //! previous call and recomputed only where something moved (free stops:
+  //! of the objects whose stops' reach a moved footprint's box meets), so
+  //! a chain that moves one or two objects a step pays for those; one
+  //! TourProxy serves one thread.
   double value(const std::vector<geometry::Pose2>& poses) const;
 
 
@@ -66,6 +68,8 @@ class TourProxy {
   mutable std::vector<geometry::Pose2> at_;  //!< the poses the footprints are for
   mutable std::vector<geometry::Polygon> fp_;
   mutable std::vector<geometry::Box> box_;
+  mutable std::vector<geometry::Box> reach_;  //!< round every stop's chair, per object
+  mutable std::vector<double> seq_;           //!< each sequence's term
   mutable std::vector<std::vector<geometry::Pose2>> free_;  //!< free stops per object
   mutable bool cached_ = false;
 };

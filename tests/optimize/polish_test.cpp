@@ -503,7 +503,8 @@ TEST(Polish, KeepsNoRearrangementThatLosesATour) {
 // planner whose path cost is the tour proxy itself: a layout with the same
 // score and shorter tours is kept, at a lower total cost, and only then;
 // with a planner whose cost never falls, nothing is kept by it, and it
-// plans at most one layout per chain and round.
+// plans at most one layout per chain and round; with a tour unfound it
+// does not run.
 TEST(Polish, KeepsAShorterTourLayoutOnlyAtALowerCost) {
   int shortened = 0;
   for (const char* file : {"bedroom.json", "office.json", "living_room.json"}) {
@@ -558,6 +559,26 @@ TEST(Polish, KeepsAShorterTourLayoutOnlyAtALowerCost) {
     }
   }
   EXPECT_GE(shortened, 2);
+  // With a tour unfound, the chains do not run: the proxy is never asked.
+  const geometry::Scene scene =
+      geometry::load_scene(std::string(HRSPACE_SOURCE_DIR) + "/scenes/bedroom.json");
+  const CostModel model = bounded_model(scene);
+  std::vector<Pose2> poses = poses_of(scene);
+  geometry::Scene scratch = scene;
+  PolishHooks hooks = exact_hooks(scratch);
+  int asked = 0;
+  hooks.tour_proxy = [&](const std::vector<Pose2>&) { return 1.0 / ++asked; };
+  const auto one_of_two = [](const std::vector<Pose2>&) {
+    CostTerms t = two_tours_found();
+    t.tours_found = 1;
+    t.unfound_penalty = 100.0;
+    return t;
+  };
+  hooks.plan = one_of_two;
+  CostTerms terms = one_of_two(poses);
+  const PolishResult r = polish(scene, model, movable_of(scene), poses, terms, hooks, 0);
+  EXPECT_EQ(r.shortened, 0);
+  EXPECT_EQ(asked, 0);
 }
 
 }  // namespace
