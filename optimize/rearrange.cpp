@@ -120,7 +120,8 @@ std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const Co
   // A wall at another angle, or the place a moved object leaves (a
   // holder's fallback, with that object's heading), can still leave it
   // askew; square_moved() turns such objects of a chain's best layout.
-  // Only the higher score's chains square: a layout they find is kept only
+  // Only the higher score's (and the shorter tours') chains square: a
+  // layout they find is kept only
   // at no higher cost, and the squaring after the polish's other stages
   // then finds the object where it was left. The fewer gross misses'
   // chains keep every heading they do not mean to mend: a turned object's

@@ -107,11 +107,12 @@ struct Rearrangement {
 //! Runs the chains from `poses` (whose preference report is `report`) and
 //! returns each chain's best layout that meets `goal`, distinct ones only,
 //! lowest energy first; each goal seeds its chains apart. kHigherScore's
-//! chains draw square headings for the movable objects whose heading no
-//! preference fixes and square those they moved before returning
-//! (squaring.h); empty when `report` has nothing to mend (no gross
-//! miss for kFewerGross, no unmet preference for kHigherScore). `stop` (may
-//! be null) ends the chains early.
+//! and kShorterTours' chains draw square headings for the movable objects
+//! whose heading no preference fixes and square those they moved before
+//! returning (squaring.h); empty when `report` has nothing to mend (no
+//! gross miss for kFewerGross, no unmet preference for kHigherScore) or,
+//! for kShorterTours, without a tour proxy. `stop` (may be null) ends the
+//! chains early.
 std::vector<Rearrangement> rearrangements(const geometry::Scene& scene, const CostModel& model,
                                           const std::vector<bool>& movable,
                                           const std::vector<geometry::Pose2>& poses,
