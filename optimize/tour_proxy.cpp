@@ -43,19 +43,20 @@ TourProxy::TourProxy(const geometry::Scene& scene, const CostModel& model,
   // The distinct legs (ordered pairs of nodes), for the leg cache. A visit
   // without free stops is skipped, so a sequence's leg into object c can
   // start at any node before it: every ordered pair of a sequence is listed.
+  // Nodes are -1 (the door) to objects − 1: a dense table finds a listed leg
+  // in one step (a scene at the format's limits lists millions of pairs).
+  const std::size_t side = scene.objects.size() + 1;
+  std::vector<int> listed(side * side, -1);
   for (const auto& n : nodes_) {
     std::vector<int> ids(n.size() * n.size(), -1);
     for (std::size_t i = 0; i < n.size(); ++i)
       for (std::size_t j = i + 1; j < n.size(); ++j) {
-        const auto it = std::find_if(leg_cache_.begin(), leg_cache_.end(), [&](const Leg& l) {
-          return l.from == n[i] && l.to == n[j];
-        });
-        if (it != leg_cache_.end()) {
-          ids[i * n.size() + j] = static_cast<int>(it - leg_cache_.begin());
-        } else {
-          ids[i * n.size() + j] = static_cast<int>(leg_cache_.size());
+        int& id = listed[static_cast<std::size_t>(n[i] + 1) * side + static_cast<std::size_t>(n[j] + 1)];
+        if (id < 0) {
+          id = static_cast<int>(leg_cache_.size());
           leg_cache_.push_back(Leg{n[i], n[j], {}, {}, {}, false});
         }
+        ids[i * n.size() + j] = id;
       }
     legs_.push_back(std::move(ids));
   }

@@ -2,7 +2,7 @@
 # Issue 33 item 4: a scene at the format's own limits (100 objects of
 # 1000-vertex footprints, M = 1000 sequences of 100 visits) reaches and
 # finishes its first annealing iteration within the documented bound
-# (docs/scene-format.md "Limits": 120 s on 2 cores; measured 47 s).
+# (docs/scene-format.md "Limits": 120 s on 2 cores). ctest runs it alone.
 # Usage: limits_test.sh HRSPACE SOURCE_DIR
 set -u
 bin="$1"; src="$2"
