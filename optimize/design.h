@@ -55,7 +55,8 @@ struct DesignOptions {
   planning::TourOptions tour;      //!< the tour planner (baseline)
   geometry::CSpaceOptions cspace;
   //! Which planner and which of the design loop's additions (refusal gate,
-  //! escape, early rejection, goal skipping): optimize/planner_config.h.
+  //! escape, early rejection, goal skipping, preferences, shorter tours,
+  //! lattice rescue): optimize/planner_config.h.
   //! `tour.planner.skip_tried_goal_nodes` is taken from it.
   PlannerConfig planner;
   planning::ReachGateOptions gate;  //!< the grid behind refusals and escape

@@ -99,11 +99,11 @@ const std::array<PlannerConfig::Switch, 7>& PlannerConfig::switches() {
        "opening arrangement of the input, an arrangement clear of the found tours, and a "
        "final polish that keeps every found tour"},
       {"shorten", &PlannerConfig::shorten,
-       "with prefer, last in the polish: layouts that meet the same preferences along "
-       "shorter tours (a tour proxy), kept at a lower total cost"},
+       "with prefer, last in the polish when every tour is found: layouts at a score no "
+       "lower whose tour proxy is more than 1 % lower, kept at a lower total cost"},
       {"rescue", &PlannerConfig::rescue,
-       "after the design, unfound tours are planned again with the lattice planner "
-       "answering every leg the RRT misses"},
+       "after the design, the first 5 unfound tours are planned again with the lattice "
+       "planner answering up to 4 legs of each that the RRT misses"},
   }};
   return list;
 }

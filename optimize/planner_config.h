@@ -7,8 +7,8 @@
 // layouts, §V), which of the proposed planner's techniques are on
 // (planning::ReuseOptions), whether the RRT skips goal nodes it already
 // tried, and which of the design loop's own additions are on (refusal gate,
-// escape from walled-in layouts, early rejection, preferences, the lattice
-// rescue of unfound tours; docs/optimize.md).
+// escape from walled-in layouts, early rejection, preferences, shorter tours,
+// the lattice rescue of unfound tours; docs/optimize.md).
 //
 // Four presets name the planners that people compare:
 //   literal   the paper's baseline read literally: RRT per leg, tried goal
@@ -60,14 +60,16 @@ struct PlannerConfig {
   //! that meets its preferences wherever every found tour stays found.
   //! Off: the paper's squared interior terms and moves.
   bool prefer = true;
-  //! Ours, with `prefer`: last in the polish, layouts that meet the same
-  //! preferences with their stops closer along the likely tours (a tour
-  //! proxy, optimize/tour_proxy.h), kept only at a lower total cost.
+  //! Ours, with `prefer`: last in the polish and only when every tour is
+  //! found, layouts at a preference score no lower, with no more angles
+  //! grossly off and a tour proxy (optimize/tour_proxy.h) more than 1 %
+  //! lower, kept only at a lower total cost with every tour found.
   bool shorten = true;
-  //! Ours: after the design, each tour still unfound is planned once more,
-  //! every leg the RRT misses (and the gate does not refuse) answered by the
-  //! lattice planner (planning/lattice.h): a leg that exists at the
-  //! lattice's resolution is found (docs/planner.md "Lattice rescue").
+  //! Ours: after the design, the first TourRound::kRescueTours (5) unfound
+  //! tours are planned once more, up to TourRound::kRescueLegs (4) legs of
+  //! each that the RRT misses (and the gate does not refuse) answered by
+  //! the lattice planner (planning/lattice.h): such a leg that exists at
+  //! the lattice's resolution is found (docs/planner.md "Lattice rescue").
   bool rescue = true;
 
   //! A named starting point.

@@ -670,8 +670,8 @@ PolishResult polish(const geometry::Scene& scene, const CostModel& model,
     });
     if (unmet && !grossly_off(report, id)) evict(i);
   }
-  // Last of all, the same preferences met along shorter tours: chains that
-  // keep the score and lower the tour proxy (optimize/tour_proxy.h), each
+  // Last of all, shorter tours at a score no lower: chains that keep the
+  // score and lower the tour proxy (optimize/tour_proxy.h), each
   // best layout planned (an allowance of its own, one per chain), the first
   // at a lower total cost kept. Run last, it leaves every stage before it
   // as it was.

@@ -83,8 +83,9 @@ enum class RearrangeGoal {
   kHigherScore,
   //! A lower tour proxy (RearrangeHooks::tour_proxy) by more than
   //! kProxyMargin of it, at a score no lower and no more angles grossly
-  //! off (kept only at a lower total cost): the same preferences met by a
-  //! layout whose stops lie closer along the likely tours.
+  //! off (kept only at a lower total cost, every tour found): a layout at
+  //! least as good on preferences whose stops lie closer along the likely
+  //! tours.
   kShorterTours,
 };
 

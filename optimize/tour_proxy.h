@@ -16,8 +16,9 @@
 // planned path and its net turn for the rotation; the proxy is
 // Σ_k L̂(s_k) · DP_k, in the units of the total cost. An object with no
 // stop left free (a stop's chair footprint, corners and centre, outside
-// the room or inside another footprint) is charged its legs as an unfound
-// tour is (CostModel::unfound_length() over the legs).
+// the room or inside another footprint) is charged for its legs the length
+// and rotation terms of an unfound tour (CostModel::unfound_length(), share
+// 1, no clearance term).
 
 #include <string>
 #include <vector>
