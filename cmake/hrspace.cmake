@@ -56,7 +56,7 @@ function(hrspace_ompl_target)
   endif()
 endfunction()
 
-# hrspace_add_test(name SOURCES ... LIBS ... [ARGS ...] [LABELS unit|slow ...] [OMPL])
+# hrspace_add_test(name SOURCES ... LIBS ... [ARGS ...] [LABELS unit|slow [no_sanitize] ...] [OMPL])
 # ARGS go to the test's command line (e.g. a --gtest_filter).
 function(hrspace_add_test name)
   cmake_parse_arguments(T "OMPL" "" "SOURCES;LIBS;ARGS;LABELS" ${ARGN})

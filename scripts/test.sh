@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds hrspace and runs its whole test suite (unit and slow labels), then
-# the unit suites again under AddressSanitizer and UndefinedBehaviorSanitizer
-# with assertions live (scripts/sanitize.sh, preset `sanitize`).
+# the unit suites again, but those labelled no_sanitize, under
+# AddressSanitizer and UndefinedBehaviorSanitizer with assertions live
+# (scripts/sanitize.sh, preset `sanitize`; docs/hardening.md).
 # Extra arguments go to the first ctest only and skip the sanitizer run,
 # e.g. scripts/test.sh -L unit
 set -euo pipefail
