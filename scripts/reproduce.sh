@@ -32,7 +32,9 @@ other options, scenes or code is refused (exit 2), never mixed in.
                only generalization and tradeoff, whose sections of REPRODUCTION.md
                stand alone: their figure, summary and section replace the
                published ones and name their own commit. A --quick run is
-               never published.
+               never published, nor a run whose study failed or was stopped
+               (its figures are drawn in DIR/figures; the exit status is the
+               study's).
   --status     only say whether paper_figures/ is current: "current" (exit 0) when
                the code under geometry/, rs/, planning/ and optimize/ at every
                commit REPRODUCTION.md names (the run's, and any study run on
@@ -136,6 +138,13 @@ status=0
 for s in "${studies[@]}"; do
   "$bin" experiment "$s" --out "$out" --jobs "$jobs" "${quick[@]}" || { status=$?; break; }
 done
+# A study that failed or was stopped leaves its runs incomplete: the figures
+# of what is stored are drawn for a look, and nothing is published.
+if [ "$status" != 0 ] && [ ${#publish[@]} -gt 0 ]; then
+  echo "reproduce.sh: study '$s' did not finish (exit $status): nothing is published; the figures of the runs stored so far are in $out/figures" >&2
+  publish=()
+  only=()
+fi
 "$python" "$root/paper_figures/plot.py" "$out" --command "$command" "${publish[@]}" "${only[@]}"
 end=$(date +%s)
 echo "reproduce.sh: $((end - start)) s wall time on $(nproc) cores; outputs in $out"

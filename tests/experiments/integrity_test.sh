@@ -157,6 +157,17 @@ grep -q -- "--publish --only generalization --only tradeoff" "$tmp/out" ||
 expect "--publish of the full run" 0 "" env HRSPACE_BIN="$tmp/stub" fake/scripts/reproduce.sh --publish
 grep -q -- "--only" "$tmp/out" && { fail "the full run published with --only:"; cat "$tmp/out"; }
 
+# 10b. A study that fails (or is stopped) publishes nothing: its exit
+# status is the script's, and the plotter runs without --publish.
+printf '#!/bin/sh\nexit 3\n' >failing
+chmod +x failing
+expect "--publish after a failed study" 3 "did not finish \\(exit 3\\): nothing is published" \
+  env HRSPACE_BIN="$tmp/failing" fake/scripts/reproduce.sh --publish
+grep -q -- "--publish" "$tmp/out" && { fail "a failed study was published:"; cat "$tmp/out"; }
+expect "--publish STUDY after a failed study" 3 "nothing is published" \
+  env HRSPACE_BIN="$tmp/failing" fake/scripts/reproduce.sh --publish generalization
+grep -q -- "--publish\|--only" "$tmp/out" && { fail "a failed study was published:"; cat "$tmp/out"; }
+
 # 11. plot.py refuses to publish smoke runs, and --only replaces one section.
 mkdir -p P/generalization
 printf 'key,quick\na,1\n' >P/generalization/runs.csv
