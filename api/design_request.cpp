@@ -52,6 +52,7 @@ void DesignRequest::validate() const {
   in_range("designs", designs, 1, 1000);
   (void)access::Rules::named(rules);
   in_range("access-goal", access_goal, 1, 100);
+  in_range("restarts", restarts, 1, 100);
   in_range("threads", threads, 0, 1024);
   if (weights) (void)parse_weights(*weights);
 }

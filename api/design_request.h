@@ -14,6 +14,10 @@
 
 namespace hrs::api {
 
+//! Chains per design unless --restarts says otherwise (docs/optimize.md
+//! "Restarts": the spread across seeds is larger than what a longer chain gains).
+inline constexpr long long kDefaultRestarts = 2;
+
 struct DesignRequest {
   std::string planner = "default";     //!< --planner: a preset, then comma items
   std::optional<std::string> reuse;    //!< --reuse: replaces the techniques
@@ -27,6 +31,9 @@ struct DesignRequest {
   long long threads = 0;       //!< tour-planning threads (0: all cores), [0, 1024]
   std::string rules = "ada";   //!< accessibility rule set: ada or iso
   long long access_goal = 1;   //!< designs tried per design until one passes, [1, 100]
+  //! Annealing chains per design, the lowest final cost kept
+  //! (api::design_restarts()), [1, 100].
+  long long restarts = kDefaultRestarts;
 
   //! Checks every field, in the order above; the first bad one throws
   //! hrs::InputError.

@@ -2,16 +2,20 @@
 #include "api/operations.h"
 
 #include <algorithm>
+#include <exception>
 #include <cstdio>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "access/accessibility.h"
 #include "api/reuse_list.h"
 #include "geometry/error.h"
 #include "geometry/free_grid.h"
 #include "geometry/polygon_ops.h"
+#include "geometry/random.h"
 #include "io/files.h"
 #include "planning/reuse.h"
 #include "planning/rrt.h"
@@ -179,18 +183,110 @@ optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int t
   return options;
 }
 
+std::uint64_t restart_seed(std::uint64_t seed, int r) {
+  if (r == 0) return seed;
+  const std::uint64_t h =
+      splitmix64(seed ^ splitmix64(static_cast<std::uint64_t>(r)));
+  return h & ((std::uint64_t{1} << 53) - 1);
+}
+
+RestartResult design_restarts(const geometry::Scene& scene, optimize::DesignOptions options,
+                              int restarts, const std::atomic<bool>* stop,
+                              const std::function<void(const optimize::DesignStep&)>& progress,
+                              const std::function<void()>& others) {
+  RestartResult out;
+  out.seed = options.seed;
+  if (restarts <= 1) {
+    out.result = optimize::design(scene, options, stop, progress);
+    return out;
+  }
+  const int cores = options.threads > 0
+                        ? options.threads
+                        : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int lanes = std::min(restarts, cores);
+  const int share = std::max(1, cores / lanes);
+  std::mutex others_mutex;
+  std::function<void(const optimize::DesignStep&)> heard;
+  if (others)
+    heard = [&](const optimize::DesignStep&) {
+      const std::lock_guard<std::mutex> lock(others_mutex);
+      others();
+    };
+  std::vector<std::optional<optimize::DesignResult>> results(static_cast<std::size_t>(restarts));
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(restarts));
+  std::atomic<int> next{0};
+  const auto work = [&] {
+    for (int r = next++; r < restarts; r = next++) {
+      optimize::DesignOptions o = options;
+      o.seed = restart_seed(options.seed, r);
+      o.threads = share;
+      try {
+        results[static_cast<std::size_t>(r)] = optimize::design(scene, o, stop, r == 0 ? progress : heard);
+      } catch (...) {
+        errors[static_cast<std::size_t>(r)] = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int j = 1; j < lanes; ++j) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  // A chain that failed (not a stop before its first iteration) fails the design.
+  for (const std::exception_ptr& e : errors) {
+    if (!e) continue;
+    try {
+      std::rethrow_exception(e);
+    } catch (const Interrupted&) {
+    }
+  }
+  int kept = -1;
+  for (int r = 0; r < restarts; ++r) {
+    const auto& c = results[static_cast<std::size_t>(r)];
+    if (!c) continue;
+    out.chains.push_back({restart_seed(options.seed, r), c->final.total(), c->final.tours_found, c->valid});
+    if (kept < 0) {
+      kept = r;
+      continue;
+    }
+    const auto& k = *results[static_cast<std::size_t>(kept)];
+    if (std::pair(!c->valid, c->final.total()) < std::pair(!k.valid, k.final.total())) kept = r;
+  }
+  if (kept < 0) std::rethrow_exception(errors[0]);  // every chain stopped before it began
+  out.result = std::move(*results[static_cast<std::size_t>(kept)]);
+  out.seed = restart_seed(options.seed, kept);
+  return out;
+}
+
+std::string restarts_json(const std::vector<RestartChain>& chains, std::uint64_t kept_seed) {
+  std::string tried;
+  for (const RestartChain& c : chains) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "%s{\"seed\":%llu,\"cost\":%.17g,\"tours_found\":%d,\"valid\":%s}",
+                  tried.empty() ? "" : ",", static_cast<unsigned long long>(c.seed), c.cost,
+                  c.tours_found, c.valid ? "true" : "false");
+    tried += buf;
+  }
+  return "{\"chains\":" + std::to_string(chains.size()) + ",\"kept_seed\":" +
+         std::to_string(kept_seed) + ",\"tried\":[" + tried + "]}";
+}
+
 AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::DesignOptions options,
                                    const std::string& rules, int tries, std::uint64_t stride,
-                                   const std::atomic<bool>* stop,
+                                   int restarts, const std::atomic<bool>* stop,
                                    const std::function<void(const optimize::DesignStep&)>& progress,
-                                   const std::function<void(int)>& on_try) {
+                                   const std::function<void(int)>& on_try,
+                                   const std::function<void()>& others) {
   const access::Rules rule_set = access::Rules::named(rules);
   const std::uint64_t first = options.seed;
   AccessGoalResult best;
   if (tries <= 1) {  // one plain design: nothing to choose, so no report here
     if (on_try) on_try(0);
-    best.result = optimize::design(scene, options, stop, progress);
+    RestartResult one = design_restarts(scene, options, restarts, stop, progress, others);
+    best.result = std::move(one.result);
     best.seed = first;
+    best.chain_seed = one.seed;
+    best.chains = std::move(one.chains);
     return best;
   }
   AccessTry kept;
@@ -198,18 +294,21 @@ AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::Desig
     if (k > 0 && stop && stop->load()) break;
     if (on_try) on_try(k);
     options.seed = first + static_cast<std::uint64_t>(k) * stride;
-    optimize::DesignResult result;
+    RestartResult one;
     try {
-      result = optimize::design(scene, options, stop, progress);
+      one = design_restarts(scene, options, restarts, stop, progress, others);
     } catch (const Interrupted&) {
       if (k == 0) throw;
       break;  // stopped before this try's first iteration: keep the best so far
     }
+    optimize::DesignResult& result = one.result;
     const access::Report report = access::evaluate(result.layout, result.tours, rule_set);
     const AccessTry t{options.seed, report.pass(), report.failures(), result.final.total()};
     const bool stopped = result.stopped;
     if (best.tries.empty() || std::pair(t.failures, t.cost) < std::pair(kept.failures, kept.cost)) {
       best.result = std::move(result);
+      best.chains = std::move(one.chains);
+      best.chain_seed = one.seed;
       best.seed = t.seed;
       kept = t;
     }

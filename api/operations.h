@@ -92,6 +92,44 @@ optimize::PlannerConfig design_planner(const std::string& planner,
 optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int threads,
                                        const optimize::PlannerConfig& planner);
 
+//! One annealing chain of a design with restarts (design_restarts()).
+struct RestartChain {
+  std::uint64_t seed = 0;
+  double cost = 0.0;     //!< the chain's final total cost
+  int tours_found = 0;   //!< of the chain's best layout
+  bool valid = false;    //!< its best layout passed every exact check
+};
+
+//! The seed of chain `r` (from 0) of a design with seed `seed`: the seed
+//! itself for r = 0, else a splitmix64 hash of both below 2^53 (a seed that
+//! `--seed` accepts: `--seed S --restarts 1` repeats chain r alone).
+std::uint64_t restart_seed(std::uint64_t seed, int r);
+
+//! Restarts (beyond the paper; docs/optimize.md "Restarts"): `restarts`
+//! independent designs of `options` at the seeds restart_seed(options.seed,
+//! r), and the one with the lowest final total cost kept (a valid layout
+//! before an invalid one; a tie to the lower r). The chains run side by
+//! side on the threads that options.threads allows (0: all cores), each
+//! with an equal share of them; a design does not depend on its thread
+//! count, so neither does the one kept. `progress` hears chain 0 only;
+//! `others` (may be empty) is called after each iteration of the other
+//! chains, one call at a time (the Python module polls Ctrl-C there). A
+//! stop (through `stop`) stops every chain: each keeps its best so far.
+//! hrs::Interrupted escapes only when every chain stopped before its first
+//! iteration. With restarts = 1 it is optimize::design() (`chains` empty).
+struct RestartResult {
+  optimize::DesignResult result;  //!< the design kept
+  std::uint64_t seed = 0;         //!< the seed of its chain
+  std::vector<RestartChain> chains;
+};
+RestartResult design_restarts(const geometry::Scene& scene, optimize::DesignOptions options,
+                              int restarts, const std::atomic<bool>* stop,
+                              const std::function<void(const optimize::DesignStep&)>& progress,
+                              const std::function<void()>& others = {});
+//! report.json's "restarts" section: the chains, their seeds and costs, and
+//! the seed kept.
+std::string restarts_json(const std::vector<RestartChain>& chains, std::uint64_t kept_seed);
+
 //! One design tried by design_for_access().
 struct AccessTry {
   std::uint64_t seed = 0;
@@ -103,22 +141,28 @@ struct AccessTry {
 //! The accessibility goal (beyond the paper): a constraint on the layout a
 //! design returns. Runs the design at seeds options.seed, options.seed +
 //! stride, … (at most `tries`, each a whole design of options.iterations)
+//! (each the best of `restarts` chains, design_restarts())
 //! and keeps the first whose layout passes `rules`; when none passes, the
 //! one with the fewest failed checks, then the lower cost. With tries = 1 it
 //! is one plain design (`tries` stays empty). A stop (through `stop`) ends
-//! the tries: the best so far is kept. `on_try(k)` (may be empty) is called before try k (from 0).
+//! the tries: the best so far is kept. `on_try(k)` (may be empty) is called before try k (from 0);
+//! `others` is design_restarts()'s.
 //! hrs::Interrupted escapes only when the first try stopped before its first
 //! iteration.
 struct AccessGoalResult {
   optimize::DesignResult result;  //!< the design kept
-  std::uint64_t seed = 0;         //!< its seed
+  std::uint64_t seed = 0;         //!< its seed (of the try; its chains have their own)
   std::vector<AccessTry> tries;
+  std::vector<RestartChain> chains;  //!< the kept design's chains (empty: one chain)
+  std::uint64_t chain_seed = 0;      //!< the seed of its chain kept (`seed` with one chain)
 };
 AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::DesignOptions options,
                                    const std::string& rules, int tries, std::uint64_t stride,
+                                   int restarts,
                                    const std::atomic<bool>* stop,
                                    const std::function<void(const optimize::DesignStep&)>& progress,
-                                   const std::function<void(int)>& on_try = {});
+                                   const std::function<void(int)>& on_try = {},
+                                   const std::function<void()>& others = {});
 //! report.json's "access_goal" section of a design_for_access() run.
 std::string access_goal_json(const AccessGoalResult& goal);
 

@@ -106,13 +106,17 @@ int remove_stale_outputs(const std::filesystem::path& out, bool multi, long keep
 constexpr const char* kDesignUsageHead =
     "hrspace design SCENE --out DIR [--seed N] [--iterations N] [--designs K] [--threads T]\n"
     "                     [--planner PRESET[,ITEM...]] [--reuse LIST] [--weights W]\n"
-    "                     [--disable LIST] [--rules ada|iso] [--access-goal N]\n\n"
+    "                     [--disable LIST] [--rules ada|iso] [--access-goal N] [--restarts R]\n\n"
     "Optimizes the furniture layout of SCENE (paper §III): simulated annealing where every\n"
     "layout is toured by the wheelchair along the M most likely AO-graph sequences.\n"
     "Writes DIR/layout.json (a scene file), DIR/tours.json, DIR/design.svg, DIR/report.json.\n"
     "With --designs K > 1: seeds N..N+K-1 into DIR/1..DIR/K and DIR/contact_sheet.svg.\n\n"
     "  --seed N        first seed (default 1)\n"
     "  --iterations N  annealing iterations (default 700)\n"
+    "  --restarts R    annealing chains per design (default 2, up to 100), run side by side\n"
+    "                  on the threads; the lowest final cost is kept. Chain 0 has seed N,\n"
+    "                  chain r a seed derived from N and r (report.json: restarts.kept_seed;\n"
+    "                  --seed S --restarts 1 repeats the chain of seed S alone)\n"
     "  --designs K     number of designs (default 1)\n"
     "  --threads T     tour-planning threads (default: all cores); results do not depend on it\n"
     "  --weights W     override the scene's weights: L,R,C (path length, rotation, clearance)\n"
@@ -194,6 +198,7 @@ DesignRequest design_request(const Args& args) {
   r.designs = args.integer("designs", 1, -kAny, kAny);
   r.rules = args.get_or("rules", "ada");
   r.access_goal = args.integer("access-goal", 1, -kAny, kAny);
+  r.restarts = args.integer("restarts", api::kDefaultRestarts, -kAny, kAny);
   r.threads = args.integer("threads", 0, -kAny, kAny);
   r.validate();
   r.planner_choice = r.planner_config();
@@ -264,7 +269,8 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   try {
     // Try k of design d has seed N + d + k·K, so no two tries share a seed.
     goal = api::design_for_access(scene, options, r.rules, static_cast<int>(r.access_goal),
-                                  static_cast<std::uint64_t>(r.designs), &g_interrupted, progress,
+                                  static_cast<std::uint64_t>(r.designs),
+                                  static_cast<int>(r.restarts), &g_interrupted, progress,
                                   [&](int k) {
                                     if (k > 0 && tty) std::cerr << "\r\033[K" << std::flush;
                                     if (k > 0)
@@ -291,6 +297,8 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   const std::filesystem::path dir = design_dir(r, d);
   optimize::RunInfo info{options.seed, r.planner_choice.name(), static_cast<int>(r.iterations)};
   if (r.access_goal > 1) info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
+  if (!goal.chains.empty())
+    info.report_sections.emplace_back("restarts", api::restarts_json(goal.chains, goal.chain_seed));
   std::string access_line;
   const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
   api::write_design_files(result, info, extras, dir);
@@ -320,7 +328,7 @@ void finish_outputs(const DesignRequest& r, const std::vector<optimize::Picture>
 
 int cmd_design(const Argv& argv) {
   const Args args(argv, {"out", "seed", "iterations", "designs", "threads", "planner", "reuse",
-                         "weights", "disable", "rules", "access-goal"});
+                         "weights", "disable", "rules", "access-goal", "restarts"});
   if (args.help()) {
     std::cout << "usage: " << kDesignUsageHead << optimize::PlannerConfig::help()
               << kDesignUsageTail;

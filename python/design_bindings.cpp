@@ -79,7 +79,8 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
                       const std::string& planner, const std::optional<std::string>& reuse,
                       const std::optional<std::string>& disable, long long threads,
                       const std::string& rules, const py::object& progress,
-                      long long access_goal, const py::object& weights, long long designs) {
+                      long long access_goal, const py::object& weights, long long designs,
+                      long long restarts) {
   scene.validate();
   // The same request, checks and messages as `hrspace design` (api/design_request.h).
   api::DesignRequest request;
@@ -93,6 +94,7 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
   request.threads = threads;
   request.rules = rules;
   request.access_goal = access_goal;
+  request.restarts = restarts;
   request.validate();
   geometry::Scene working = scene.scene;
   request.apply_weights(working);
@@ -119,6 +121,16 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
         }
       };
 
+  // The other chains of a design with restarts: Ctrl-C is polled there too.
+  const std::function<void()> others = [&] {
+    py::gil_scoped_acquire gil;
+    if (stop.load()) return;
+    if (PyErr_CheckSignals() != 0) {
+      pending.emplace(py::error_already_set());
+      stop.store(true);
+    }
+  };
+
   py::list out;
   for (long long d = 0; d < request.designs && !stop.load(); ++d) {
     const optimize::DesignOptions options = request.options(d);
@@ -128,13 +140,17 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
       py::gil_scoped_release release;
       // Try k of design d has seed + d + k·designs, as with the command.
       goal = api::design_for_access(working, options, rules, static_cast<int>(request.access_goal),
-                                    static_cast<std::uint64_t>(request.designs), &stop, step_done);
+                                    static_cast<std::uint64_t>(request.designs),
+                                    static_cast<int>(request.restarts), &stop, step_done, {},
+                                    others);
     }
     if (failure) std::rethrow_exception(failure);
     design->result = std::move(goal.result);
     design->info = {goal.seed, choice.name(), static_cast<int>(request.iterations)};
     if (request.access_goal > 1)
       design->info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
+    if (!goal.chains.empty())
+      design->info.report_sections.emplace_back("restarts", api::restarts_json(goal.chains, goal.chain_seed));
     design->extras = api::attach_extras(design->result, rules, design->info);
     design->label = scene.label;
     design->tours = json_loads(optimize::tours_document(design->result))["tours"];
@@ -241,7 +257,8 @@ void bind_design(py::module_& m) {
       "accessibility rule set, ada or iso, as --rules), access_goal (designs tried until "
       "one passes the rules, as --access-goal), weights (3 or 5 numbers, or their text, as "
       "--weights) and designs (as --designs: seeds seed … seed + designs - 1; a list of "
-      "Designs when designs > 1) are the "
+      "Designs when designs > 1) and restarts (annealing chains per design, the lowest "
+      "final cost kept, as --restarts) are the "
       "command's options. progress(step) is called after every iteration with a dict (the "
       "fields of report.json's trace: iteration from 1, iterations, temperature, object, valid, "
       "accepted, proposed, current, best, planning_ms). The GIL is released while it runs. "
@@ -253,7 +270,8 @@ void bind_design(py::module_& m) {
         py::arg("iterations") = 700, py::arg("planner") = "default",
         py::arg("reuse") = py::none(), py::arg("disable") = py::none(), py::arg("threads") = 0,
         py::arg("rules") = "ada", py::arg("progress") = py::none(), py::arg("access_goal") = 1,
-        py::arg("weights") = py::none(), py::arg("designs") = 1, doc.c_str());
+        py::arg("weights") = py::none(), py::arg("designs") = 1,
+        py::arg("restarts") = api::kDefaultRestarts, doc.c_str());
 }
 
 }  // namespace hrs::python

@@ -37,6 +37,11 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ -x "$bin" ] || { echo "outcome-digests: no binary at $bin (scripts/build.sh hrspace)" >&2; exit 2; }
+# One annealing chain per design (hrspace design defaults to two restarts):
+# the digests follow the engine, and commits before --restarts existed
+# print the same lines.
+single=()
+case "$("$bin" design --help 2>/dev/null || true)" in *--restarts*) single=(--restarts 1) ;; esac
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 for scene in "$root"/scenes/*.json; do
@@ -44,7 +49,7 @@ for scene in "$root"/scenes/*.json; do
   for planner in $planners; do
     out="$work/$name-$planner"
     "$bin" design "$scene" --out "$out" --seed 1 --iterations "$iterations" --threads 2 \
-      --planner "$planner" >/dev/null
+      --planner "$planner" "${single[@]}" >/dev/null
     digest="$(python3 - "$out" "$drop" <<'EOF'
 import hashlib, json, sys, pathlib
 d = pathlib.Path(sys.argv[1])

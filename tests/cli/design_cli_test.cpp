@@ -49,6 +49,9 @@ TEST(DesignCli, BadInputExitsTwoWithOneLine) {
   EXPECT_EQ(run("design /nonexistent.json --out " + out), 2);
   EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --iterations x"), 2);
   EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --designs 0"), 2);
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --restarts 0", &err), 2);
+  EXPECT_NE(err.find("--restarts"), std::string::npos);
+  EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --restarts 101"), 2);
   EXPECT_EQ(run("design " + kBedroom + " --out " + out + " --bogus 1"), 2);
   EXPECT_EQ(run("design --help"), 0);
 }
@@ -70,6 +73,39 @@ TEST(DesignCli, SeveralDesignsGoToNumberedDirectoriesWithAContactSheet) {
   const auto report = nlohmann::json::parse(r2);
   EXPECT_EQ(report["seed"], 6);
   EXPECT_EQ(report["iterations_run"], 3);
+}
+
+std::string file_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+TEST(DesignCli, RestartsKeepTheCheapestChainAndItsSeedRepeatsItAlone) {
+  const std::string small = std::string(HRSPACE_SOURCE_DIR) + "/scenes/small_bedroom.json";
+  const fs::path out = hrs::test_support::scratch_path("cli_restarts");
+  fs::remove_all(out);
+  ASSERT_EQ(run("design " + small + " --out " + (out / "three").string() +
+                " --seed 1 --iterations 20 --restarts 3"),
+            0);
+  const auto report = nlohmann::json::parse(file_text(out / "three" / "report.json"));
+  EXPECT_EQ(report["seed"], 1);  // the seed asked for; the chain kept has its own
+  const auto& restarts = report["restarts"];
+  ASSERT_EQ(restarts["chains"], 3);
+  ASSERT_EQ(restarts["tried"].size(), 3u);
+  EXPECT_EQ(restarts["tried"][0]["seed"], 1);  // chain 0 has the seed itself
+  double least = 1e300;
+  for (const auto& c : restarts["tried"]) least = std::min(least, c["cost"].get<double>());
+  EXPECT_EQ(report["cost"]["final"].get<double>(), least);
+  // The chain kept, alone: the same layout and tours, byte for byte.
+  const std::string kept = std::to_string(restarts["kept_seed"].get<std::uint64_t>());
+  ASSERT_EQ(run("design " + small + " --out " + (out / "alone").string() + " --seed " + kept +
+                " --iterations 20 --restarts 1 --threads 1"),
+            0);
+  EXPECT_EQ(file_text(out / "three" / "layout.json"), file_text(out / "alone" / "layout.json"));
+  EXPECT_EQ(file_text(out / "three" / "tours.json"), file_text(out / "alone" / "tours.json"));
+  EXPECT_FALSE(nlohmann::json::parse(file_text(out / "alone" / "report.json")).contains("restarts"));
 }
 
 TEST(DesignCli, CtrlCWritesTheBestDesignSoFarAndExits130) {

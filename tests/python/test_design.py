@@ -10,6 +10,7 @@ import pytest
 import hrspace
 from conftest import BEDROOM, SOURCE_DIR, cli_error, drop_timings, run_cli
 
+SMALL_BEDROOM = SOURCE_DIR / "scenes" / "small_bedroom.json"
 FILES = ["layout.json", "tours.json", "design.svg", "report.json", "manifest.json",
          "accessibility.json", "design.html"]
 
@@ -43,13 +44,20 @@ def compare_with_command(tmp_path, scene_path, seed, iterations, planner, thread
     assert html.unescape(frame.split('srcdoc="', 1)[1].rsplit('"></iframe>', 1)[0]) == page
     assert [s["iteration"] for s in steps] == list(range(1, iterations + 1))
     # The last step's best is the annealer's; the arrangement and the polish
-    # may change the layout after it.
+    # may change the layout after it. progress hears chain 0 (of the default
+    # two restarts): the steps are the kept design's when chain 0 is kept.
+    restarts = result.report.get("restarts")
+    assert restarts is not None and restarts["chains"] == 2
+    assert restarts["tried"][0]["seed"] == seed
+    assert result.cost == min(c["cost"] for c in restarts["tried"])
     post = result.report["arrange"]["rounds_kept"] + result.report["polish"]["kept"] + \
         result.report["polish"]["squared"]
+    if restarts["kept_seed"] != seed:
+        post = -1  # another chain's design: its annealer's steps were not heard
     if post == 0:
         assert steps[-1]["best"] == pytest.approx(result.cost)
-    if result.report["arrange"]["rounds_kept"] > 0 and result.report["polish"]["kept"] == 0 \
-            and result.report["polish"]["squared"] == 0:
+    if post >= 0 and result.report["arrange"]["rounds_kept"] > 0 \
+            and result.report["polish"]["kept"] == 0 and result.report["polish"]["squared"] == 0:
         assert result.cost < steps[-1]["best"]
     assert not result.stopped
     return result
@@ -88,9 +96,19 @@ def test_an_exception_in_progress_stops_the_design_and_carries_it():
             raise RuntimeError("enough")
 
     with pytest.raises(RuntimeError, match="enough") as e:
-        hrspace.design(hrspace.Scene(BEDROOM), iterations=500, planner="proposed", progress=progress)
+        hrspace.design(hrspace.Scene(BEDROOM), iterations=500, planner="proposed", progress=progress,
+                       restarts=1)
     best = e.value.design
     assert best.stopped and len(best.report["trace"]) == 3
+    best.layout.validate()
+    # With restarts, the stop stops every chain; the cheapest is kept, stopped too.
+    with pytest.raises(RuntimeError, match="enough") as e:
+        hrspace.design(hrspace.Scene(BEDROOM), iterations=500, planner="proposed", progress=progress,
+                       restarts=2)
+    best = e.value.design
+    record = best.report["restarts"]
+    assert best.stopped and len(best.report["trace"]) < 500
+    assert best.cost == min(c["cost"] for c in record["tried"])
     best.layout.validate()
 
 
@@ -157,6 +175,23 @@ def test_access_goal_keeps_the_first_design_that_passes_or_the_fewest_failures(t
     assert cli_report["access_goal"] == record
 
 
+def test_restarts_keep_the_cheapest_chain_and_its_seed_repeats_it_alone():
+    scene = hrspace.Scene(SMALL_BEDROOM)
+    best = hrspace.design(scene, seed=1, iterations=20, restarts=3)
+    record = best.report["restarts"]
+    assert record["chains"] == 3 and best.report["seed"] == 1
+    costs = [c["cost"] for c in record["tried"]]
+    assert record["tried"][0]["seed"] == 1
+    assert best.cost == min(costs)
+    # Each chain alone (restarts=1 at its seed) has the cost the record gives it.
+    for c in record["tried"]:
+        alone = hrspace.design(scene, seed=c["seed"], iterations=20, restarts=1, threads=1)
+        assert "restarts" not in alone.report
+        assert alone.cost == c["cost"]
+        if c["seed"] == record["kept_seed"]:
+            assert alone.layout == best.layout
+
+
 def test_access_goal_out_of_range_is_refused():
     with pytest.raises(ValueError, match="access-goal"):
         hrspace.design(hrspace.Scene(BEDROOM), iterations=1, access_goal=0)
@@ -170,6 +205,7 @@ def test_access_goal_out_of_range_is_refused():
     ({"threads": 5000}, ["--threads", "5000"]),
     ({"rules": "din"}, ["--rules", "din"]),
     ({"access_goal": 101}, ["--access-goal", "101"]),
+    ({"restarts": 0}, ["--restarts", "0"]),
     ({"weights": "1,2"}, ["--weights", "1,2"]),
     ({"weights": "1,x,1"}, ["--weights", "1,x,1"]),
     ({"weights": [1, -1, 1]}, ["--weights", "1,-1,1"]),
