@@ -209,6 +209,8 @@ def design(
     access_goal: int = 1,
     weights: Optional[Union[str, Sequence[float]]] = None,
     designs: int = 1,
+    restarts: int = 2,
 ) -> Union[Design, List[Design]]:
-    """Optimizes the layout as `hrspace design`; Ctrl-C raises KeyboardInterrupt whose
-    `design` attribute holds the best design so far."""
+    """Optimizes the layout as `hrspace design` (the cheapest of `restarts` annealing
+    chains); Ctrl-C raises KeyboardInterrupt whose `design` attribute holds the best
+    design so far."""
