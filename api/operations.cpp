@@ -2,8 +2,8 @@
 #include "api/operations.h"
 
 #include <algorithm>
-#include <exception>
 #include <cstdio>
+#include <exception>
 #include <memory>
 #include <mutex>
 #include <sstream>
@@ -185,8 +185,7 @@ optimize::DesignOptions design_options(std::uint64_t seed, int iterations, int t
 
 std::uint64_t restart_seed(std::uint64_t seed, int r) {
   if (r == 0) return seed;
-  const std::uint64_t h =
-      splitmix64(seed ^ splitmix64(static_cast<std::uint64_t>(r)));
+  const std::uint64_t h = splitmix64(seed ^ splitmix64(static_cast<std::uint64_t>(r)));
   return h & ((std::uint64_t{1} << 53) - 1);
 }
 
@@ -221,7 +220,8 @@ RestartResult design_restarts(const geometry::Scene& scene, optimize::DesignOpti
       o.seed = restart_seed(options.seed, r);
       o.threads = share;
       try {
-        results[static_cast<std::size_t>(r)] = optimize::design(scene, o, stop, r == 0 ? progress : heard);
+        results[static_cast<std::size_t>(r)] =
+            optimize::design(scene, o, stop, r == 0 ? progress : heard);
       } catch (...) {
         errors[static_cast<std::size_t>(r)] = std::current_exception();
       }
@@ -243,7 +243,8 @@ RestartResult design_restarts(const geometry::Scene& scene, optimize::DesignOpti
   for (int r = 0; r < restarts; ++r) {
     const auto& c = results[static_cast<std::size_t>(r)];
     if (!c) continue;
-    out.chains.push_back({restart_seed(options.seed, r), c->final.total(), c->final.tours_found, c->valid});
+    out.chains.push_back(
+        {restart_seed(options.seed, r), c->final.total(), c->final.tours_found, c->valid});
     if (kept < 0) {
       kept = r;
       continue;
