@@ -258,6 +258,9 @@ RestartResult design_restarts(const geometry::Scene& scene, optimize::DesignOpti
   return out;
 }
 
+namespace {
+
+//! report.json's "restarts" section.
 std::string restarts_json(const std::vector<RestartChain>& chains, std::uint64_t kept_seed) {
   std::string tried;
   for (const RestartChain& c : chains) {
@@ -271,6 +274,8 @@ std::string restarts_json(const std::vector<RestartChain>& chains, std::uint64_t
   return "{\"chains\":" + std::to_string(chains.size()) + ",\"kept_seed\":" +
          std::to_string(kept_seed) + ",\"tried\":[" + tried + "]}";
 }
+
+}  // namespace
 
 AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::DesignOptions options,
                                    const std::string& rules, int tries, std::uint64_t stride,
@@ -333,6 +338,12 @@ std::string access_goal_json(const AccessGoalResult& goal) {
   return "{\"tries\":" + std::to_string(goal.tries.size()) + ",\"kept_seed\":" +
          std::to_string(goal.seed) + ",\"pass\":" + (pass ? "true" : "false") +
          ",\"tried\":[" + tried + "]}";
+}
+
+void add_goal_sections(const AccessGoalResult& goal, optimize::RunInfo& info) {
+  if (!goal.tries.empty()) info.report_sections.emplace_back("access_goal", access_goal_json(goal));
+  if (!goal.chains.empty())
+    info.report_sections.emplace_back("restarts", restarts_json(goal.chains, goal.chain_seed));
 }
 
 std::string fnv1a64_hex(const std::string& text) {

@@ -126,9 +126,6 @@ RestartResult design_restarts(const geometry::Scene& scene, optimize::DesignOpti
                               int restarts, const std::atomic<bool>* stop,
                               const std::function<void(const optimize::DesignStep&)>& progress,
                               const std::function<void()>& others = {});
-//! report.json's "restarts" section: the chains, their seeds and costs, and
-//! the seed kept.
-std::string restarts_json(const std::vector<RestartChain>& chains, std::uint64_t kept_seed);
 
 //! One design tried by design_for_access().
 struct AccessTry {
@@ -140,9 +137,8 @@ struct AccessTry {
 
 //! The accessibility goal (beyond the paper): a constraint on the layout a
 //! design returns. Runs the design at seeds options.seed, options.seed +
-//! stride, … (at most `tries`, each a whole design of options.iterations)
-//! (each the best of `restarts` chains, design_restarts())
-//! and keeps the first whose layout passes `rules`; when none passes, the
+//! stride, … (at most `tries`, each a whole design of options.iterations
+//! with `restarts` chains, design_restarts()) and keeps the first whose layout passes `rules`; when none passes, the
 //! one with the fewest failed checks, then the lower cost. With tries = 1 it
 //! is one plain design (`tries` stays empty). A stop (through `stop`) ends
 //! the tries: the best so far is kept. `on_try(k)` (may be empty) is called before try k (from 0);
@@ -165,6 +161,11 @@ AccessGoalResult design_for_access(const geometry::Scene& scene, optimize::Desig
                                    const std::function<void()>& others = {});
 //! report.json's "access_goal" section of a design_for_access() run.
 std::string access_goal_json(const AccessGoalResult& goal);
+//! Adds report.json's sections of a design_for_access() run to `info`:
+//! "access_goal" when it tried several designs, "restarts" (the chains,
+//! their seeds and costs, and the seed kept) when the design had several
+//! chains. The command and the Python module both call it.
+void add_goal_sections(const AccessGoalResult& goal, optimize::RunInfo& info);
 
 //! The files the front end writes beside the design's own: accessibility.json
 //! and design.html (view/viewer.h).

@@ -296,9 +296,7 @@ bool run_design(const DesignRequest& r, const geometry::Scene& scene, long d, bo
   if (tty) std::cerr << "\r\033[K" << std::flush;
   const std::filesystem::path dir = design_dir(r, d);
   optimize::RunInfo info{options.seed, r.planner_choice.name(), static_cast<int>(r.iterations)};
-  if (r.access_goal > 1) info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
-  if (!goal.chains.empty())
-    info.report_sections.emplace_back("restarts", api::restarts_json(goal.chains, goal.chain_seed));
+  api::add_goal_sections(goal, info);
   std::string access_line;
   const api::DesignExtras extras = api::attach_extras(result, r.rules, info, &access_line);
   api::write_design_files(result, info, extras, dir);

@@ -147,10 +147,7 @@ py::object run_design(const PyScene& scene, long long seed, long long iterations
     if (failure) std::rethrow_exception(failure);
     design->result = std::move(goal.result);
     design->info = {goal.seed, choice.name(), static_cast<int>(request.iterations)};
-    if (request.access_goal > 1)
-      design->info.report_sections.emplace_back("access_goal", api::access_goal_json(goal));
-    if (!goal.chains.empty())
-      design->info.report_sections.emplace_back("restarts", api::restarts_json(goal.chains, goal.chain_seed));
+    api::add_goal_sections(goal, design->info);
     design->extras = api::attach_extras(design->result, rules, design->info);
     design->label = scene.label;
     design->tours = json_loads(optimize::tours_document(design->result))["tours"];
